@@ -1,0 +1,45 @@
+#pragma once
+// Quantities that `brdftab eval` can compute: their parameters (CSV input columns, with
+// domains), their results (output columns) and the methods that compute them.
+#include <functional>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace brdftab::lookup {
+class TableSet;
+}
+
+namespace brdftab::cli {
+
+struct Parameter {
+  std::string name;           // CSV column
+  double lo, hi;              // valid domain (use +-infinity for unbounded)
+  bool lo_open = false, hi_open = false;
+  bool integer = false;       // must be an integer value
+  std::string domain;         // as printed in errors, e.g. "[0, 1]" or "{0, 1, 2}"
+};
+
+struct EvalContext {
+  lookup::TableSet* tables = nullptr;  // opened lazily from --tables DIR
+};
+
+// Computes one row: in has one value per parameter (already domain-checked),
+// out one value per output. Throws std::exception with a clear message for a row it
+// cannot compute (e.g. "no fit exists for mode 2"); eval reports it with the row number.
+using Method = std::function<void(std::span<const double> in, std::span<double> out, const EvalContext&)>;
+
+struct Quantity {
+  std::string name;
+  std::string description;
+  std::vector<Parameter> parameters;
+  std::vector<std::string> outputs;
+  std::map<std::string, Method> methods;  // keys among "exact", "table", "fit"
+};
+
+// All quantities (src/cli/quantity_registry.cpp); each family contributes a function
+// `std::vector<Quantity> <family>_quantities()` listed there.
+const std::vector<Quantity>& all_quantities();
+
+}  // namespace brdftab::cli

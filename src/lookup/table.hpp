@@ -1,0 +1,95 @@
+#pragma once
+// Regular-grid tables of 1 to 4 dimensions with multilinear or cubic interpolation.
+//
+// Cubic interpolation is tensor-product 4-point Lagrange interpolation in the grid
+// coordinate: exact on cubic polynomials (in u) everywhere, including next to the
+// boundary where the stencil is shifted inward; fourth-order convergence; continuous
+// (C0) across cells. It needs no prefiltering, so the file holds plain samples that any
+// HDF5 tool reads as they are.
+//
+// Queries never allocate and are safe from many threads at once (a Table is immutable
+// after construction).
+#include <array>
+#include <cstddef>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "lookup/axis.hpp"
+
+namespace brdftab::lookup {
+
+enum class Storage : std::uint8_t { float32, float64 };
+enum class Interpolation : std::uint8_t { linear, cubic };
+std::string_view storage_name(Storage s);          // "float32" | "float64"
+std::string_view interpolation_name(Interpolation i);  // "linear" | "cubic"
+Interpolation interpolation_from_name(std::string_view name);
+
+// What a query does with an input outside an axis' range or NaN.
+//  clamp: out-of-range values are clamped to the nearest edge; NaN gives NaN.
+//  error: throws DomainError naming the axis, the value and the range.
+enum class OutOfDomain : std::uint8_t { clamp, error };
+
+class DomainError : public std::domain_error {
+ public:
+  using std::domain_error::domain_error;
+};
+
+inline constexpr int kMaxRank = 4;
+
+class Table {
+ public:
+  Table() = default;
+  // Takes the values in row-major order (last axis fastest); stores them as `storage`
+  // (float32 rounds). Throws std::invalid_argument on a shape mismatch, a non-finite
+  // value, rank outside 1..4, or cubic with fewer than 4 points on an axis.
+  Table(std::string name, std::vector<Axis> axes, std::span<const double> values, Storage storage,
+        Interpolation interpolation);
+
+  const std::string& name() const { return name_; }
+  int rank() const { return rank_; }
+  const Axis& axis(int d) const { return axes_[d]; }
+  Storage storage() const { return storage_; }
+  Interpolation interpolation() const { return interpolation_; }
+  std::size_t size() const { return size_; }
+  std::size_t bytes() const { return size_ * (storage_ == Storage::float32 ? 4 : 8); }
+  double at_index(std::span<const int> index) const;  // the stored grid value
+
+  // Scalar query: x holds one coordinate per axis (x.size() == rank()).
+  double eval(std::span<const double> x, OutOfDomain policy = OutOfDomain::clamp) const;
+  double operator()(double x0) const { return eval1(x0); }
+  double operator()(double x0, double x1) const { return eval2(x0, x1); }
+  double operator()(double x0, double x1, double x2) const {
+    const double x[3] = {x0, x1, x2};
+    return eval(x);
+  }
+  double eval1(double x0, OutOfDomain policy = OutOfDomain::clamp) const { return eval({&x0, 1}, policy); }
+  double eval2(double x0, double x1, OutOfDomain policy = OutOfDomain::clamp) const {
+    const double x[2] = {x0, x1};
+    return eval(x, policy);
+  }
+
+  // Batched query: `points` holds n points of rank() coordinates each (point-major),
+  // out.size() == n. Throws std::invalid_argument on a size mismatch.
+  void eval_batch(std::span<const double> points, std::span<double> out,
+                  OutOfDomain policy = OutOfDomain::clamp) const;
+
+ private:
+  using Kernel = double (*)(const Table&, const double* x);
+  std::string name_;
+  std::array<Axis, kMaxRank> axes_{};
+  std::array<std::size_t, kMaxRank> strides_{};
+  int rank_ = 0;
+  std::size_t size_ = 0;
+  Storage storage_ = Storage::float64;
+  Interpolation interpolation_ = Interpolation::linear;
+  std::vector<float> f32_;
+  std::vector<double> f64_;
+  Kernel kernel_ = nullptr;
+
+  void check_point(const double* x, OutOfDomain policy) const;
+  template <int D, int K, class T> friend struct KernelImpl;
+};
+
+}  // namespace brdftab::lookup
