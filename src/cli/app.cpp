@@ -1,0 +1,82 @@
+// Command-line parsing (CLI11) for `brdftab`; the work is in cmd_*.cpp.
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/quantity.hpp"
+
+namespace brdftab::cli {
+
+std::filesystem::path default_tables_dir() {
+  if (const char* env = std::getenv("BRDFTAB_TABLES"); env && *env) return env;
+  std::error_code ec;
+  if (std::filesystem::is_directory("tables", ec)) return "tables";
+#ifdef BRDFTAB_DEFAULT_TABLES
+  return BRDFTAB_DEFAULT_TABLES;
+#else
+  return "tables";
+#endif
+}
+
+int run_main(int argc, char** argv) {
+  CLI::App app{"brdftab: exact numerics and HDF5 lookup tables for BRDF models"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "brdftab 0.1.0");
+
+  GenerateOptions gen;
+  auto* g = app.add_subcommand("generate", "generate the tables a manifest lists (default: tables/default.json)");
+  g->add_option("--manifest", gen.manifest, "manifest JSON file")->check(CLI::ExistingFile);
+  g->add_option("--out", gen.out_dir, "output folder (default: the table folder)");
+  g->add_option("--only", gen.only, "generate only these families")->expected(1, -1);
+  g->add_option("--threads", gen.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  g->add_flag("--quiet,-q", gen.quiet, "no progress output");
+
+  EvalOptions ev;
+  std::string quantities;
+  for (const auto& q : all_quantities()) quantities += (quantities.empty() ? "" : ", ") + q.name;
+  auto* e = app.add_subcommand("eval", "evaluate a quantity for CSV rows on stdin, CSV on stdout");
+  e->add_option("quantity", ev.quantity, "one of: " + quantities)->required();
+  e->add_option("--method", ev.method, "exact | table | fit")->check(CLI::IsMember({"exact", "table", "fit"}));
+  e->add_option("--tables", ev.tables_dir, "table folder (default: tables)");
+
+  ValidateOptions va;
+  auto* v = app.add_subcommand("validate", "accuracy report: fits and tables against exact numerics");
+  v->add_option("--tables", va.tables_dir, "table folder (default: tables)");
+  v->add_option("--report", va.report_dir, "report folder (default: report)");
+  v->add_flag("--quiet,-q", va.quiet, "less output");
+
+  BenchOptions be;
+  auto* b = app.add_subcommand("bench", "speed against error: exact numerics, tables, fits (Google Benchmark)");
+  b->add_option("--tables", be.tables_dir, "table folder (default: tables)");
+  b->add_option("--report", be.report_dir, "also write benchmark JSON into this folder");
+  b->allow_extras();
+
+  std::string info_file;
+  auto* i = app.add_subcommand("info", "describe the tables in an HDF5 file");
+  i->add_option("file", info_file, "table file (.h5)")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& err) {
+    return app.exit(err);
+  }
+  if (ev.tables_dir.empty()) ev.tables_dir = default_tables_dir();
+  if (va.tables_dir.empty()) va.tables_dir = default_tables_dir();
+  if (be.tables_dir.empty()) be.tables_dir = default_tables_dir();
+  if (va.report_dir.empty()) va.report_dir = "report";
+  if (gen.out_dir.empty()) gen.out_dir = default_tables_dir();
+
+  if (g->parsed()) return run_generate(gen, std::cout, std::cerr);
+  if (e->parsed()) return run_eval(ev, std::cin, std::cout, std::cerr);
+  if (v->parsed()) return run_validate(va, std::cout, std::cerr);
+  if (b->parsed()) {
+    be.benchmark_args = b->remaining();
+    return run_bench(be, std::cerr);
+  }
+  if (i->parsed()) return run_info(info_file, std::cout, std::cerr);
+  return 1;
+}
+
+}  // namespace brdftab::cli

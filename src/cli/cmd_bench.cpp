@@ -1,0 +1,37 @@
+// `brdftab bench [--tables DIR] [--report DIR] [--benchmark_* ...]`: Google Benchmark run of
+// every registered group; accuracy is reported in counters next to the times.
+#include <benchmark/benchmark.h>
+
+#include <ostream>
+
+#include "cli/commands.hpp"
+#include "validate/bench.hpp"
+
+namespace brdftab::cli {
+
+int run_bench(const BenchOptions& o, std::ostream& err) {
+  std::vector<std::string> args = {"brdftab-bench"};
+  for (const auto& a : o.benchmark_args) args.push_back(a);
+  if (!o.report_dir.empty()) {
+    std::filesystem::create_directories(o.report_dir);
+    args.push_back("--benchmark_out=" + (o.report_dir / "bench.json").string());
+    args.push_back("--benchmark_out_format=json");
+  }
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  int argc = static_cast<int>(argv.size());
+  benchmark::Initialize(&argc, argv.data());
+  if (benchmark::ReportUnrecognizedArguments(argc, argv.data())) return 2;
+  try {
+    validate::BenchContext ctx{o.tables_dir};
+    for (auto reg : validate::all_bench_registrations()) reg(ctx);
+  } catch (const std::exception& e) {
+    err << "brdftab bench: " << e.what() << "\n";
+    return 1;
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
+
+}  // namespace brdftab::cli

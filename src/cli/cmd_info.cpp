@@ -1,0 +1,58 @@
+// `brdftab info FILE.h5`: what each dataset holds, how big and how accurate it is.
+#include <iomanip>
+#include <ostream>
+
+#include "cli/commands.hpp"
+#include "cli/csv.hpp"
+#include "lookup/table_file.hpp"
+
+namespace brdftab::cli {
+
+namespace {
+std::string show(const lookup::Attribute& a) {
+  if (auto s = std::get_if<std::string>(&a)) return *s;
+  if (auto d = std::get_if<double>(&a)) return format17(*d);
+  return std::to_string(std::get<long long>(a));
+}
+}  // namespace
+
+int run_info(const std::filesystem::path& file, std::ostream& out, std::ostream& err) {
+  try {
+    out << "file: " << file.string() << "\n";
+    for (const auto& [k, v] : lookup::file_attributes(file)) out << "  " << k << ": " << show(v) << "\n";
+    for (const auto& name : lookup::list_tables(file)) {
+      const auto loaded = lookup::load_table(file, name);
+      const auto& t = loaded.table;
+      const auto& info = loaded.info;
+      out << "\ndataset: " << name << "\n";
+      out << "  quantity: " << info.attribute_string("quantity") << "\n";
+      out << "  shape: ";
+      for (int d = 0; d < t.rank(); ++d) out << (d ? " x " : "") << t.axis(d).n;
+      out << "\n  storage: " << lookup::storage_name(t.storage()) << ", " << t.bytes() << " bytes of values\n";
+      out << "  interpolation: " << lookup::interpolation_name(t.interpolation()) << "\n";
+      out << "  axes:\n";
+      for (int d = 0; d < t.rank(); ++d) {
+        const auto& a = t.axis(d);
+        out << "    " << a.name << ": " << a.n << " points, transform " << lookup::transform_name(a.transform);
+        if (a.transform == lookup::Transform::x_over_k_plus_x) out << " (k = " << format17(a.scale) << ")";
+        out << ", range [" << format17(a.x_lo) << ", " << format17(a.x_hi) << "]";
+        if (!a.units.empty()) out << ", units " << a.units;
+        out << "\n";
+      }
+      out << "  measured error (off-grid): max abs " << info.attribute_string("max_abs_error") << ", max rel "
+          << info.attribute_string("max_rel_error") << " over " << info.attribute_string("error_samples")
+          << " samples\n";
+      out << "  provenance:\n";
+      for (const auto& [k, v] : info.attributes) {
+        if (k == "quantity" || k == "max_abs_error" || k == "max_rel_error" || k == "error_samples") continue;
+        out << "    " << k << ": " << show(v) << "\n";
+      }
+    }
+  } catch (const std::exception& e) {
+    err << "brdftab info: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace brdftab::cli

@@ -1,0 +1,49 @@
+#pragma once
+// The `brdftab` subcommands. Each returns the process exit status:
+// 0 success, 1 failure (I/O, bad file, numerics), 2 bad input (eval rows, manifest).
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace brdftab::cli {
+
+// Default table folder: $BRDFTAB_TABLES, else ./tables if it exists, else the source tree's tables/.
+std::filesystem::path default_tables_dir();
+
+struct GenerateOptions {
+  std::filesystem::path manifest;  // empty: tables/default.json of the source tree, else built-in defaults
+  std::filesystem::path out_dir;
+  std::vector<std::string> only;
+  int threads = 0;
+  bool quiet = false;
+};
+int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err);
+
+struct EvalOptions {
+  std::string quantity;
+  std::string method = "exact";
+  std::filesystem::path tables_dir;
+};
+int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ostream& err);
+
+int run_info(const std::filesystem::path& file, std::ostream& out, std::ostream& err);
+
+struct ValidateOptions {
+  std::filesystem::path tables_dir;
+  std::filesystem::path report_dir;
+  bool quiet = false;
+};
+int run_validate(const ValidateOptions& o, std::ostream& out, std::ostream& err);
+
+struct BenchOptions {
+  std::filesystem::path tables_dir;
+  std::filesystem::path report_dir;  // empty: console only
+  std::vector<std::string> benchmark_args;  // passed to Google Benchmark (e.g. --benchmark_filter=...)
+};
+int run_bench(const BenchOptions& o, std::ostream& err);
+
+// Parses the command line and runs the subcommand.
+int run_main(int argc, char** argv);
+
+}  // namespace brdftab::cli

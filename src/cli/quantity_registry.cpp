@@ -1,0 +1,20 @@
+// Every quantity `brdftab eval` knows, one line per family.
+#include "cli/quantity.hpp"
+
+namespace brdftab::cli {
+
+std::vector<Quantity> demo_quantities();
+
+const std::vector<Quantity>& all_quantities() {
+  static const std::vector<Quantity> quantities = [] {
+    std::vector<Quantity> all;
+    auto add = [&](std::vector<Quantity> v) {
+      for (auto& q : v) all.push_back(std::move(q));
+    };
+    add(demo_quantities());
+    return all;
+  }();
+  return quantities;
+}
+
+}  // namespace brdftab::cli

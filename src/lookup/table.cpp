@@ -1,0 +1,202 @@
+#include "lookup/table.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+namespace brdftab::lookup {
+
+std::string_view storage_name(Storage s) { return s == Storage::float32 ? "float32" : "float64"; }
+std::string_view interpolation_name(Interpolation i) { return i == Interpolation::cubic ? "cubic" : "linear"; }
+Interpolation interpolation_from_name(std::string_view name) {
+  if (name == "linear") return Interpolation::linear;
+  if (name == "cubic") return Interpolation::cubic;
+  throw std::invalid_argument("unknown interpolation '" + std::string(name) + "' (known: linear, cubic)");
+}
+
+namespace {
+
+std::string fmt(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// Stencil of one axis: first grid index and K weights.
+// Linear (K = 2): hat functions. Cubic (K = 4): Lagrange basis on nodes i..i+3 evaluated at
+// local coordinate s = t - i, exact for cubic polynomials in t. The stencil is shifted
+// inward at the boundary (one-sided), which keeps the exactness.
+template <int K>
+inline void stencil(const Axis& a, double x, int& base, double* w) {
+  double t = a.grid_coordinate(x);
+  const double tmax = a.n - 1;
+  t = t > 0 ? t : 0;  // x outside the range is clamped (the error policy was checked before)
+  t = t < tmax ? t : tmax;
+  if constexpr (K == 2) {
+    int i = static_cast<int>(t);
+    i = i < a.n - 2 ? i : a.n - 2;
+    const double f = t - i;
+    base = i;
+    w[0] = 1.0 - f;
+    w[1] = f;
+  } else {
+    int i = static_cast<int>(t) - 1;
+    i = i > 0 ? i : 0;
+    i = i < a.n - 4 ? i : a.n - 4;
+    const double s = t - i;
+    const double s0 = s, s1 = s - 1.0, s2 = s - 2.0, s3 = s - 3.0;
+    base = i;
+    w[0] = -s1 * s2 * s3 * (1.0 / 6.0);
+    w[1] = s0 * s2 * s3 * 0.5;
+    w[2] = -s0 * s1 * s3 * 0.5;
+    w[3] = s0 * s1 * s2 * (1.0 / 6.0);
+  }
+}
+
+// Tensor-product sum over the K^D stencil; the last axis is contiguous.
+template <int d, int D, int K, class T>
+inline double accumulate(const T* p, const std::size_t* strides, const double (*w)[K]) {
+  if constexpr (d == D - 1) {
+    double s = 0;
+    for (int k = 0; k < K; ++k) s += w[d][k] * static_cast<double>(p[k]);
+    return s;
+  } else {
+    double s = 0;
+    for (int k = 0; k < K; ++k) s += w[d][k] * accumulate<d + 1, D, K, T>(p + k * strides[d], strides, w);
+    return s;
+  }
+}
+
+}  // namespace
+
+template <int D, int K, class T>
+struct KernelImpl {
+  static const T* data(const Table& tb) {
+    if constexpr (std::is_same_v<T, float>)
+      return tb.f32_.data();
+    else
+      return tb.f64_.data();
+  }
+  static double eval(const Table& tb, const double* x) {
+    int base[D];
+    double w[D][K];
+    bool nan = false;
+    for (int d = 0; d < D; ++d) {
+      nan |= std::isnan(x[d]);
+      stencil<K>(tb.axes_[d], nan ? tb.axes_[d].x_lo : x[d], base[d], w[d]);
+    }
+    std::size_t offset = 0;
+    for (int d = 0; d < D; ++d) offset += base[d] * tb.strides_[d];
+    const double v = accumulate<0, D, K, T>(data(tb) + offset, tb.strides_.data(), w);
+    return nan ? std::numeric_limits<double>::quiet_NaN() : v;
+  }
+};
+
+namespace {
+using KernelFn = double (*)(const Table&, const double*);
+
+template <int K, class T>
+KernelFn pick_rank(int rank) {
+  switch (rank) {
+    case 1: return &KernelImpl<1, K, T>::eval;
+    case 2: return &KernelImpl<2, K, T>::eval;
+    case 3: return &KernelImpl<3, K, T>::eval;
+    default: return &KernelImpl<4, K, T>::eval;
+  }
+}
+}  // namespace
+
+Table::Table(std::string name, std::vector<Axis> axes, std::span<const double> values, Storage storage,
+             Interpolation interpolation)
+    : name_(std::move(name)), storage_(storage), interpolation_(interpolation) {
+  const std::string where = "table '" + name_ + "'";
+  if (axes.empty() || axes.size() > static_cast<std::size_t>(kMaxRank))
+    throw std::invalid_argument(where + ": rank " + std::to_string(axes.size()) + " is outside 1..4");
+  rank_ = static_cast<int>(axes.size());
+  const int min_points = interpolation == Interpolation::cubic ? 4 : 2;
+  std::size_t size = 1;
+  for (int d = 0; d < rank_; ++d) {
+    if (axes[d].n < min_points)
+      throw std::invalid_argument(where + ": axis '" + axes[d].name + "' has " + std::to_string(axes[d].n) +
+                                  " points; " + std::string(interpolation_name(interpolation)) +
+                                  " interpolation needs at least " + std::to_string(min_points));
+    axes_[d] = std::move(axes[d]);
+    size *= static_cast<std::size_t>(axes_[d].n);
+  }
+  size_ = size;
+  std::size_t stride = 1;
+  for (int d = rank_ - 1; d >= 0; --d) {
+    strides_[d] = stride;
+    stride *= static_cast<std::size_t>(axes_[d].n);
+  }
+  if (values.size() != size_)
+    throw std::invalid_argument(where + ": " + std::to_string(values.size()) + " values given, the axes need " +
+                                std::to_string(size_));
+  for (std::size_t i = 0; i < size_; ++i)
+    if (!std::isfinite(values[i]))
+      throw std::invalid_argument(where + ": value #" + std::to_string(i) + " is not finite (" + fmt(values[i]) + ")");
+  if (storage_ == Storage::float32) {
+    f32_.resize(size_);
+    for (std::size_t i = 0; i < size_; ++i) {
+      f32_[i] = static_cast<float>(values[i]);
+      if (!std::isfinite(f32_[i]))
+        throw std::invalid_argument(where + ": value #" + std::to_string(i) + " (" + fmt(values[i]) +
+                                    ") overflows float32");
+    }
+  } else {
+    f64_.assign(values.begin(), values.end());
+  }
+  const bool cubic = interpolation_ == Interpolation::cubic;
+  if (storage_ == Storage::float32)
+    kernel_ = cubic ? pick_rank<4, float>(rank_) : pick_rank<2, float>(rank_);
+  else
+    kernel_ = cubic ? pick_rank<4, double>(rank_) : pick_rank<2, double>(rank_);
+}
+
+double Table::at_index(std::span<const int> index) const {
+  if (static_cast<int>(index.size()) != rank_)
+    throw std::invalid_argument("table '" + name_ + "': index of rank " + std::to_string(index.size()) +
+                                ", table rank " + std::to_string(rank_));
+  std::size_t offset = 0;
+  for (int d = 0; d < rank_; ++d) {
+    if (index[d] < 0 || index[d] >= axes_[d].n)
+      throw std::out_of_range("table '" + name_ + "': index " + std::to_string(index[d]) + " outside axis '" +
+                              axes_[d].name + "' (0.." + std::to_string(axes_[d].n - 1) + ")");
+    offset += index[d] * strides_[d];
+  }
+  return storage_ == Storage::float32 ? f32_[offset] : f64_[offset];
+}
+
+void Table::check_point(const double* x, OutOfDomain policy) const {
+  if (policy != OutOfDomain::error) return;
+  for (int d = 0; d < rank_; ++d) {
+    const Axis& a = axes_[d];
+    if (!a.contains(x[d]))
+      throw DomainError("table '" + name_ + "': " + a.name + " = " + fmt(x[d]) + " is outside the table domain [" +
+                        fmt(a.x_lo) + ", " + fmt(a.x_hi) + "]");
+  }
+}
+
+double Table::eval(std::span<const double> x, OutOfDomain policy) const {
+  if (static_cast<int>(x.size()) != rank_)
+    throw std::invalid_argument("table '" + name_ + "': query of rank " + std::to_string(x.size()) +
+                                ", table rank " + std::to_string(rank_));
+  check_point(x.data(), policy);
+  return kernel_(*this, x.data());
+}
+
+void Table::eval_batch(std::span<const double> points, std::span<double> out, OutOfDomain policy) const {
+  if (points.size() != out.size() * static_cast<std::size_t>(rank_))
+    throw std::invalid_argument("table '" + name_ + "': batch of " + std::to_string(points.size()) +
+                                " coordinates for " + std::to_string(out.size()) + " outputs of rank " +
+                                std::to_string(rank_));
+  const double* p = points.data();
+  const std::size_t n = out.size();
+  if (policy == OutOfDomain::error)
+    for (std::size_t i = 0; i < n; ++i) check_point(p + i * rank_, policy);
+  const Kernel k = kernel_;
+  for (std::size_t i = 0; i < n; ++i) out[i] = k(*this, p + i * rank_);
+}
+
+}  // namespace brdftab::lookup

@@ -1,0 +1,25 @@
+#include "lookup/table_set.hpp"
+
+namespace brdftab::lookup {
+
+TableSet::TableSet(std::filesystem::path dir) : dir_(std::move(dir)) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir_, ec))
+    throw TableFileError("table folder '" + dir_.string() + "' does not exist or is not a directory");
+}
+
+const LoadedTable& TableSet::get(const std::string& file, const std::string& dataset) {
+  const std::string key = file + "\n" + dataset;
+  std::lock_guard lock(mutex_);
+  auto it = loaded_.find(key);
+  if (it != loaded_.end()) return *it->second;
+  auto loaded = std::make_unique<LoadedTable>(load_table(dir_ / file, dataset));
+  return *loaded_.emplace(key, std::move(loaded)).first->second;
+}
+
+std::size_t TableSet::loaded_count() const {
+  std::lock_guard lock(mutex_);
+  return loaded_.size();
+}
+
+}  // namespace brdftab::lookup

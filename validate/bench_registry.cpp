@@ -1,0 +1,15 @@
+// Every benchmark group of `brdftab bench`.
+#include "validate/bench.hpp"
+
+namespace brdftab::validate {
+
+void register_lookup_benchmarks(const BenchContext& ctx);
+
+const std::vector<BenchRegistration>& all_bench_registrations() {
+  static const std::vector<BenchRegistration> v = {
+      &register_lookup_benchmarks,
+  };
+  return v;
+}
+
+}  // namespace brdftab::validate
