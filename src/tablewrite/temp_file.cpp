@@ -17,29 +17,23 @@ namespace {
 // Fixed-size registry readable from a signal handler (no allocation, no locks there).
 constexpr int kSlots = 64;
 constexpr std::size_t kPathMax = 4096;
+constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 std::array<std::array<char, kPathMax>, kSlots> g_paths{};
 std::array<std::atomic<bool>, kSlots> g_used{};
+std::array<struct sigaction, 3> g_previous{};  // the handlers we replaced, restored afterwards
+int g_live = 0;                                 // live temporaries (guarded by g_register_mutex)
 std::mutex g_register_mutex;
 
 extern "C" void remove_temps_and_reraise(int sig) {
   for (int i = 0; i < kSlots; ++i)
     if (g_used[i].load()) ::unlink(g_paths[i].data());
-  std::signal(sig, SIG_DFL);
+  for (int k = 0; k < 3; ++k)
+    if (kSignals[k] == sig) sigaction(sig, &g_previous[k], nullptr);  // chain to the previous handler
   std::raise(sig);
 }
 
-void install_handlers_once() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
-      struct sigaction sa {};
-      sa.sa_handler = remove_temps_and_reraise;
-      sigemptyset(&sa.sa_mask);
-      sigaction(sig, &sa, nullptr);
-    }
-  });
-}
-
+// Our handler is installed only while a temporary exists, and the program's own handlers
+// are put back when the last one is gone.
 int register_path(const std::filesystem::path& p) {
   std::lock_guard lock(g_register_mutex);
   const std::string s = p.string();
@@ -48,6 +42,14 @@ int register_path(const std::filesystem::path& p) {
     if (!g_used[i].load()) {
       std::memcpy(g_paths[i].data(), s.c_str(), s.size() + 1);
       g_used[i].store(true);
+      if (g_live++ == 0) {
+        for (int k = 0; k < 3; ++k) {
+          struct sigaction sa {};
+          sa.sa_handler = remove_temps_and_reraise;
+          sigemptyset(&sa.sa_mask);
+          sigaction(kSignals[k], &sa, &g_previous[k]);
+        }
+      }
       return i;
     }
   }
@@ -58,11 +60,12 @@ void unregister_path(int slot) {
   if (slot < 0) return;
   std::lock_guard lock(g_register_mutex);
   g_used[slot].store(false);
+  if (--g_live == 0)
+    for (int k = 0; k < 3; ++k) sigaction(kSignals[k], &g_previous[k], nullptr);
 }
 }  // namespace
 
 TempFile::TempFile(const std::filesystem::path& destination) : destination_(destination) {
-  install_handlers_once();
   std::random_device rd;
   const auto dir = destination.has_parent_path() ? destination.parent_path() : std::filesystem::path(".");
   temp_ = dir / ("." + destination.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +

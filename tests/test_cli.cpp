@@ -1,0 +1,151 @@
+// The brdftab command line as users script it: generate -> info -> eval, exit codes and
+// error messages. Runs the real executable.
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "generators/demo_family.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status;
+  std::string out, err;
+};
+
+// Runs `brdftab <args>` with `input` on stdin.
+Result run_cli(const std::string& args, const std::string& input = "") {
+  const fs::path dir = fs::path(BRDFTAB_TEST_TMP) / "cli";
+  fs::create_directories(dir);
+  std::ofstream(dir / "in.csv") << input;
+  const std::string cmd = std::string("'") + BRDFTAB_EXE + "' " + args + " < '" + (dir / "in.csv").string() +
+                          "' > '" + (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'";
+  const int raw = std::system(cmd.c_str());
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out.txt"), slurp(dir / "err.txt")};
+}
+
+fs::path demo_tables() {
+  static const fs::path dir = [] {
+    const fs::path d = fs::path(BRDFTAB_TEST_TMP) / "cli_tables";
+    fs::remove_all(d);
+    fs::create_directories(d);
+    std::ofstream(d / "manifest.json") << R"({"schema_version": 1, "tables": {"demo": {"x_points": 129, "y_points": 33}}})";
+    const auto r = run_cli("generate --quiet --manifest '" + (d / "manifest.json").string() + "' --out '" + d.string() + "'");
+    REQUIRE(r.status == 0);
+    return d;
+  }();
+  return dir;
+}
+
+}  // namespace
+
+TEST_CASE("generate writes the table and a summary with its measured error") {
+  const fs::path d = demo_tables();
+  CHECK(fs::exists(d / "demo.h5"));
+  const auto r = run_cli("generate --manifest '" + (d / "manifest.json").string() + "' --out '" + d.string() + "'");
+  CHECK(r.status == 0);
+  CHECK(r.out.find("demo_exp_cos") != std::string::npos);
+  CHECK(r.out.find("max_rel_err") != std::string::npos);
+  CHECK(r.err.find("demo_exp_cos: fill") != std::string::npos);  // plain progress lines (not a terminal)
+  const auto q = run_cli("generate --quiet --manifest '" + (d / "manifest.json").string() + "' --out '" + d.string() + "'");
+  CHECK(q.err.empty());
+}
+
+TEST_CASE("eval prints the input columns then the results with 17 significant digits") {
+  const auto r = run_cli("eval demo_exp_cos --method exact", "x,y\n0.5,0.25\n3,1\n");
+  REQUIRE(r.status == 0);
+  char expect[128];
+  std::snprintf(expect, sizeof expect, "x,y,value\n0.5,0.25,%.17g\n3,1,%.17g\n", brdftab::gen::demo_exp_cos_exact(0.5, 0.25),
+                std::exp(-3.0) * std::cos(1.0));
+  CHECK(r.out == expect);
+}
+
+TEST_CASE("eval --method table agrees with the closed form within the table's stated error") {
+  const auto info = run_cli("info '" + (demo_tables() / "demo.h5").string() + "'");
+  REQUIRE(info.status == 0);
+  const auto pos = info.out.find("max abs ");
+  REQUIRE(pos != std::string::npos);
+  const double stated = std::stod(info.out.substr(pos + 8));
+  CHECK(stated > 0);
+  CHECK(stated < 1e-4);
+  const auto r = run_cli("eval demo_exp_cos --method table --tables '" + demo_tables().string() + "'",
+                         "y,x\n0.3,0.7\n1.5,10\n0,0\n");
+  REQUIRE(r.status == 0);
+  std::istringstream lines(r.out);
+  std::string line;
+  std::getline(lines, line);
+  CHECK(line == "y,x,value");
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    double y, x, v;
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf", &y, &x, &v) == 3);
+    CHECK(std::abs(v - std::exp(-x) * std::cos(y)) <= stated);
+    ++rows;
+  }
+  CHECK(rows == 3);
+}
+
+TEST_CASE("eval: bad rows exit 2 naming the row, the column, the value and the domain") {
+  auto r = run_cli("eval demo_exp_cos", "x,y\n0.5,0.25\n-1,0.5\n");
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err == "brdftab eval demo_exp_cos: row 2 (line 3), column 'x': value '-1' is outside the valid domain [0, inf]\n");
+  r = run_cli("eval demo_exp_cos", "x,y\n0.5,nan\n");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("row 1 (line 2), column 'y': value 'nan' is not a number") != std::string::npos);
+  r = run_cli("eval demo_exp_cos", "x,y\n0.5,abc\n");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("column 'y': value 'abc' is not a number") != std::string::npos);
+  r = run_cli("eval demo_exp_cos", "x\n0.5\n");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("missing column 'y'") != std::string::npos);
+  r = run_cli("eval demo_exp_cos", "x,y\n0.5\n");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("row 1 (line 2): 1 cells, the header has 2") != std::string::npos);
+  r = run_cli("eval demo_exp_cos --method fit", "x,y\n0.5,0.1\n");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("no method 'fit'") != std::string::npos);
+  r = run_cli("eval no_such_quantity", "x\n1\n");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("unknown quantity 'no_such_quantity'") != std::string::npos);
+  r = run_cli("eval demo_exp_cos --method table --tables /nonexistent", "x,y\n0.5,0.1\n");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("/nonexistent") != std::string::npos);
+}
+
+TEST_CASE("info describes shape, axes, storage, errors and provenance; a corrupt file is an error") {
+  const auto r = run_cli("info '" + (demo_tables() / "demo.h5").string() + "'");
+  REQUIRE(r.status == 0);
+  for (const char* s : {"dataset: demo_exp_cos", "shape: 129 x 33", "storage: float64", "transform x/(k+x)",
+                        "range [0, inf]", "source_commit", "created_utc", "max rel", "method:"})
+    CHECK_MESSAGE(r.out.find(s) != std::string::npos, s);
+  const fs::path bad = fs::path(BRDFTAB_TEST_TMP) / "cli" / "bad.h5";
+  std::ofstream(bad) << "garbage";
+  const auto e = run_cli("info '" + bad.string() + "'");
+  CHECK(e.status == 1);
+  CHECK(e.err.find("bad.h5") != std::string::npos);
+}
+
+TEST_CASE("generate rejects a bad manifest with exit 2 and names the key") {
+  const fs::path d = fs::path(BRDFTAB_TEST_TMP) / "cli_bad_manifest";
+  fs::create_directories(d);
+  std::ofstream(d / "m.json") << R"({"schema_version": 1, "tables": {"demo": {"y_points": -3}}})";
+  const auto r = run_cli("generate --quiet --manifest '" + (d / "m.json").string() + "' --out '" + d.string() + "'");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("tables.demo.y_points = -3 is outside [4, 4096]") != std::string::npos);
+  CHECK(!fs::exists(d / "demo.h5"));
+}
