@@ -2,6 +2,7 @@
 // error messages. Runs the real executable.
 #include <doctest/doctest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -23,7 +24,8 @@ struct Result {
 
 // Runs `brdftab <args>` with `input` on stdin.
 Result run_cli(const std::string& args, const std::string& input = "") {
-  const fs::path dir = fs::path(BRDFTAB_TEST_TMP) / "cli";
+  // Own scratch folder per process: CTest runs test cases in parallel.
+  const fs::path dir = fs::path(BRDFTAB_TEST_TMP) / ("cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / "in.csv") << input;
   const std::string cmd = std::string("'") + BRDFTAB_EXE + "' " + args + " < '" + (dir / "in.csv").string() +
@@ -40,7 +42,7 @@ Result run_cli(const std::string& args, const std::string& input = "") {
 
 fs::path demo_tables() {
   static const fs::path dir = [] {
-    const fs::path d = fs::path(BRDFTAB_TEST_TMP) / "cli_tables";
+    const fs::path d = fs::path(BRDFTAB_TEST_TMP) / ("cli_tables_" + std::to_string(::getpid()));
     fs::remove_all(d);
     fs::create_directories(d);
     std::ofstream(d / "manifest.json") << R"({"schema_version": 1, "tables": {"demo": {"x_points": 129, "y_points": 33}}})";
@@ -133,7 +135,7 @@ TEST_CASE("info describes shape, axes, storage, errors and provenance; a corrupt
   for (const char* s : {"dataset: demo_exp_cos", "shape: 129 x 33", "storage: float64", "transform x/(k+x)",
                         "range [0, inf]", "source_commit", "created_utc", "max rel", "method:"})
     CHECK_MESSAGE(r.out.find(s) != std::string::npos, s);
-  const fs::path bad = fs::path(BRDFTAB_TEST_TMP) / "cli" / "bad.h5";
+  const fs::path bad = fs::path(BRDFTAB_TEST_TMP) / ("cli_" + std::to_string(::getpid())) / "bad.h5";
   std::ofstream(bad) << "garbage";
   const auto e = run_cli("info '" + bad.string() + "'");
   CHECK(e.status == 1);
@@ -141,7 +143,7 @@ TEST_CASE("info describes shape, axes, storage, errors and provenance; a corrupt
 }
 
 TEST_CASE("generate rejects a bad manifest with exit 2 and names the key") {
-  const fs::path d = fs::path(BRDFTAB_TEST_TMP) / "cli_bad_manifest";
+  const fs::path d = fs::path(BRDFTAB_TEST_TMP) / ("cli_bad_manifest_" + std::to_string(::getpid()));
   fs::create_directories(d);
   std::ofstream(d / "m.json") << R"({"schema_version": 1, "tables": {"demo": {"y_points": -3}}})";
   const auto r = run_cli("generate --quiet --manifest '" + (d / "m.json").string() + "' --out '" + d.string() + "'");

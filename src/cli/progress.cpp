@@ -20,8 +20,11 @@ void StderrProgress::update(const std::string& stage, double fraction) {
   } else {
     if (new_stage) {
       stage_ = stage;
-      err_ << stage << " ..." << (fraction >= 1.0 ? " done" : "") << "\n";
-    } else if (fraction >= 1.0) {
+      stage_done_ = false;
+      err_ << stage << " ...\n";
+    }
+    if (fraction >= 1.0 && !stage_done_) {
+      stage_done_ = true;
       err_ << stage << " done\n";
     }
   }

@@ -23,6 +23,7 @@ class StderrProgress final : public gen::Progress {
   std::mutex mutex_;
   std::string stage_;
   bool line_open_ = false;
+  bool stage_done_ = false;
   std::chrono::steady_clock::time_point last_{};
 };
 

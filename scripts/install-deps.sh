@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs the Debian packages brdftab needs, if missing. Idempotent; silent when
+# everything is already there.
+set -euo pipefail
+packages=(cmake g++ make git libeigen3-dev libboost-dev libboost-math-dev libhdf5-dev doctest-dev libcli11-dev
+          nlohmann-json3-dev libbenchmark-dev gnuplot-nox)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "install-deps: installing ${missing[*]}" >&2
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq >&2
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
