@@ -27,12 +27,13 @@ std::string fmt(double v) {
 // Linear (K = 2): hat functions. Cubic (K = 4): Lagrange basis on nodes i..i+3 evaluated at
 // local coordinate s = t - i, exact for cubic polynomials in t. The stencil is shifted
 // inward at the boundary (one-sided), which keeps the exactness.
-template <int K>
-inline void stencil(const Axis& a, double x, int& base, double* w) {
-  double t = a.grid_coordinate(x);
-  const double tmax = a.n - 1;
-  t = t > 0 ? t : 0;  // x outside the range is clamped (the error policy was checked before)
-  t = t < tmax ? t : tmax;
+// Identity = true skips the transform (all-identity tables take this path).
+template <int K, bool Identity, class Map>
+inline void stencil(const Map& a, double x, int& base, double* w) {
+  const double u = Identity ? x : apply_transform(a.transform, x, a.k);
+  double t = (u - a.u0) * a.inv_du;
+  t = t > 0 ? t : 0;  // also maps NaN to 0 (the caller returns NaN for NaN input)
+  t = t < a.tmax ? t : a.tmax;  // outside the range: clamped (the error policy was checked before)
   if constexpr (K == 2) {
     int i = static_cast<int>(t);
     i = i < a.n - 2 ? i : a.n - 2;
@@ -78,31 +79,52 @@ struct KernelImpl {
     else
       return tb.f64_.data();
   }
-  static double eval(const Table& tb, const double* x) {
+  template <bool Identity>
+  static inline double point(const Table::AxisMap* maps, const std::size_t* strides, const T* values,
+                             const double* x) {
     int base[D];
     double w[D][K];
     bool nan = false;
-    for (int d = 0; d < D; ++d) {
-      nan |= std::isnan(x[d]);
-      stencil<K>(tb.axes_[d], nan ? tb.axes_[d].x_lo : x[d], base[d], w[d]);
-    }
     std::size_t offset = 0;
-    for (int d = 0; d < D; ++d) offset += base[d] * tb.strides_[d];
-    const double v = accumulate<0, D, K, T>(data(tb) + offset, tb.strides_.data(), w);
+    for (int d = 0; d < D; ++d) {
+      nan |= x[d] != x[d];
+      stencil<K, Identity>(maps[d], x[d], base[d], w[d]);
+      offset += base[d] * strides[d];
+    }
+    const double v = accumulate<0, D, K, T>(values + offset, strides, w);
     return nan ? std::numeric_limits<double>::quiet_NaN() : v;
+  }
+  template <bool Identity>
+  static double eval(const Table& tb, const double* x) {
+    return point<Identity>(tb.maps_.data(), tb.strides_.data(), data(tb), x);
+  }
+  template <bool Identity>
+  static void batch(const Table& tb, const double* pts, std::size_t n, double* out) {
+    // Local copies: the compiler keeps them in registers across the loop.
+    const auto maps = tb.maps_;
+    const auto strides = tb.strides_;
+    const T* values = data(tb);
+    for (std::size_t i = 0; i < n; ++i) out[i] = point<Identity>(maps.data(), strides.data(), values, pts + i * D);
   }
 };
 
 namespace {
 using KernelFn = double (*)(const Table&, const double*);
+using BatchFn = void (*)(const Table&, const double*, std::size_t, double*);
+
+template <int D, int K, class T>
+void pick(bool identity, KernelFn& k, BatchFn& b) {
+  k = identity ? &KernelImpl<D, K, T>::template eval<true> : &KernelImpl<D, K, T>::template eval<false>;
+  b = identity ? &KernelImpl<D, K, T>::template batch<true> : &KernelImpl<D, K, T>::template batch<false>;
+}
 
 template <int K, class T>
-KernelFn pick_rank(int rank) {
+void pick_rank(int rank, bool identity, KernelFn& k, BatchFn& b) {
   switch (rank) {
-    case 1: return &KernelImpl<1, K, T>::eval;
-    case 2: return &KernelImpl<2, K, T>::eval;
-    case 3: return &KernelImpl<3, K, T>::eval;
-    default: return &KernelImpl<4, K, T>::eval;
+    case 1: return pick<1, K, T>(identity, k, b);
+    case 2: return pick<2, K, T>(identity, k, b);
+    case 3: return pick<3, K, T>(identity, k, b);
+    default: return pick<4, K, T>(identity, k, b);
   }
 }
 }  // namespace
@@ -147,11 +169,19 @@ Table::Table(std::string name, std::vector<Axis> axes, std::span<const double> v
   } else {
     f64_.assign(values.begin(), values.end());
   }
+  bool identity = true;
+  for (int d = 0; d < rank_; ++d) {
+    const Axis& a = axes_[d];
+    maps_[d] = AxisMap{a.u0, a.inv_du, a.scale, static_cast<double>(a.n - 1), a.n, a.transform};
+    identity = identity && a.transform == Transform::identity;
+  }
   const bool cubic = interpolation_ == Interpolation::cubic;
   if (storage_ == Storage::float32)
-    kernel_ = cubic ? pick_rank<4, float>(rank_) : pick_rank<2, float>(rank_);
+    cubic ? pick_rank<4, float>(rank_, identity, kernel_, batch_kernel_)
+          : pick_rank<2, float>(rank_, identity, kernel_, batch_kernel_);
   else
-    kernel_ = cubic ? pick_rank<4, double>(rank_) : pick_rank<2, double>(rank_);
+    cubic ? pick_rank<4, double>(rank_, identity, kernel_, batch_kernel_)
+          : pick_rank<2, double>(rank_, identity, kernel_, batch_kernel_);
 }
 
 double Table::at_index(std::span<const int> index) const {
@@ -195,8 +225,7 @@ void Table::eval_batch(std::span<const double> points, std::span<double> out, Ou
   const std::size_t n = out.size();
   if (policy == OutOfDomain::error)
     for (std::size_t i = 0; i < n; ++i) check_point(p + i * rank_, policy);
-  const Kernel k = kernel_;
-  for (std::size_t i = 0; i < n; ++i) out[i] = k(*this, p + i * rank_);
+  batch_kernel_(*this, p, n, out.data());
 }
 
 }  // namespace brdftab::lookup

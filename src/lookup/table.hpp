@@ -77,6 +77,13 @@ class Table {
 
  private:
   using Kernel = double (*)(const Table&, const double* x);
+  using BatchKernel = void (*)(const Table&, const double* points, std::size_t n, double* out);
+  // What a query needs of an axis, packed together (the Axis itself holds strings).
+  struct AxisMap {
+    double u0, inv_du, k, tmax;
+    int n;
+    Transform transform;
+  };
   std::string name_;
   std::array<Axis, kMaxRank> axes_{};
   std::array<std::size_t, kMaxRank> strides_{};
@@ -86,7 +93,9 @@ class Table {
   Interpolation interpolation_ = Interpolation::linear;
   std::vector<float> f32_;
   std::vector<double> f64_;
+  std::array<AxisMap, kMaxRank> maps_{};
   Kernel kernel_ = nullptr;
+  BatchKernel batch_kernel_ = nullptr;
 
   void check_point(const double* x, OutOfDomain policy) const;
   template <int D, int K, class T> friend struct KernelImpl;
