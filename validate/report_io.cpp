@@ -62,7 +62,7 @@ void plot_lines(const std::filesystem::path& png, const std::filesystem::path& c
 void plot_heatmap(const std::filesystem::path& png, const std::filesystem::path& csv, const std::string& title,
                   const std::string& xlabel, const std::string& ylabel, const std::string& cblabel, bool logcb) {
   std::string s = "set terminal pngcairo size 900,700 noenhanced\nset output " + quote(png.string()) +
-                  "\nset datafile separator ','\nset view map\nunset key\n";
+                  "\nset datafile separator ','\nset view map\nunset key\nset autoscale fix\n";
   s += "set title " + quote(title) + "\nset xlabel " + quote(xlabel) + "\nset ylabel " + quote(ylabel) +
        "\nset cblabel " + quote(cblabel) + "\n";
   if (logcb) s += "set logscale cb\nset format cb '%.0e'\n";
