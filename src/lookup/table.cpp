@@ -1,5 +1,6 @@
 #include "lookup/table.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -98,13 +99,43 @@ struct KernelImpl {
   static double eval(const Table& tb, const double* x) {
     return point<Identity>(tb.maps_.data(), tb.strides_.data(), data(tb), x);
   }
+  // Batched: points are processed in chunks. Pass 1 computes every point's stencil (index
+  // and weights) axis by axis, a loop without dependencies between points that the
+  // compiler vectorizes; pass 2 gathers the values and sums.
   template <bool Identity>
   static void batch(const Table& tb, const double* pts, std::size_t n, double* out) {
-    // Local copies: the compiler keeps them in registers across the loop.
+    constexpr int C = 64;
     const auto maps = tb.maps_;
     const auto strides = tb.strides_;
     const T* values = data(tb);
-    for (std::size_t i = 0; i < n; ++i) out[i] = point<Identity>(maps.data(), strides.data(), values, pts + i * D);
+    alignas(64) double w[D][K][C];
+    alignas(64) std::size_t off[C];
+    alignas(64) double nan[C];
+    for (std::size_t start = 0; start < n; start += C) {
+      const int m = static_cast<int>(std::min<std::size_t>(C, n - start));
+      const double* p = pts + start * D;
+      for (int j = 0; j < m; ++j) off[j] = 0, nan[j] = 0;
+      for (int d = 0; d < D; ++d) {
+        const Table::AxisMap a = maps[d];
+        const std::size_t stride = strides[d];
+        for (int j = 0; j < m; ++j) {
+          const double x = p[j * D + d];
+          nan[j] += x != x ? 1.0 : 0.0;
+          int base;
+          double wk[K];
+          stencil<K, Identity>(a, x, base, wk);
+          off[j] += static_cast<std::size_t>(base) * stride;
+          for (int k = 0; k < K; ++k) w[d][k][j] = wk[k];
+        }
+      }
+      for (int j = 0; j < m; ++j) {
+        double wj[D][K];
+        for (int d = 0; d < D; ++d)
+          for (int k = 0; k < K; ++k) wj[d][k] = w[d][k][j];
+        const double v = accumulate<0, D, K, T>(values + off[j], strides.data(), wj);
+        out[start + j] = nan[j] != 0 ? std::numeric_limits<double>::quiet_NaN() : v;
+      }
+    }
   }
 };
 
