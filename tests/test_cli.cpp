@@ -45,7 +45,7 @@ fs::path demo_tables() {
     const fs::path d = fs::path(BRDFTAB_TEST_TMP) / ("cli_tables_" + std::to_string(::getpid()));
     fs::remove_all(d);
     fs::create_directories(d);
-    std::ofstream(d / "manifest.json") << R"({"schema_version": 1, "tables": {"demo": {"x_points": 129, "y_points": 33}}})";
+    std::ofstream(d / "manifest.json") << R"({"schema_version": 1, "tables": {"demo": {"x_points": 129, "y_step": 0.05}}})";
     const auto r = run_cli("generate --quiet --manifest '" + (d / "manifest.json").string() + "' --out '" + d.string() + "'");
     REQUIRE(r.status == 0);
     return d;
@@ -145,9 +145,9 @@ TEST_CASE("info describes shape, axes, storage, errors and provenance; a corrupt
 TEST_CASE("generate rejects a bad manifest with exit 2 and names the key") {
   const fs::path d = fs::path(BRDFTAB_TEST_TMP) / ("cli_bad_manifest_" + std::to_string(::getpid()));
   fs::create_directories(d);
-  std::ofstream(d / "m.json") << R"({"schema_version": 1, "tables": {"demo": {"y_points": -3}}})";
+  std::ofstream(d / "m.json") << R"({"schema_version": 1, "tables": {"demo": {"y_step": -3}}})";
   const auto r = run_cli("generate --quiet --manifest '" + (d / "m.json").string() + "' --out '" + d.string() + "'");
   CHECK(r.status == 2);
-  CHECK(r.err.find("tables.demo.y_points = -3 is outside [4, 4096]") != std::string::npos);
+  CHECK(r.err.find("tables.demo.y_step = -3 is outside [0.0001, 1]") != std::string::npos);
   CHECK(!fs::exists(d / "demo.h5"));
 }

@@ -2,6 +2,8 @@
 // rejected with a message naming the key; absent families are not generated.
 #include <doctest/doctest.h>
 
+#include <filesystem>
+
 #include "generators/family.hpp"
 #include "generators/manifest.hpp"
 
@@ -54,4 +56,20 @@ TEST_CASE("EntryReader range checks: domain, order, shape") {
   CHECK_THROWS_WITH_AS(r.range("r5", {1.5, 2}, 1, 10, true), "tables.x.r5[0] = 1 is outside (1, 10]", ManifestError);
   CHECK(r.range("absent", {0.2, 0.3}, 0, 1) == std::pair<double, double>{0.2, 0.3});
   CHECK_NOTHROW(r.finish());
+}
+
+TEST_CASE("a narrower range in a manifest gives a smaller table at the same error") {
+  const std::filesystem::path dir = std::filesystem::path(BRDFTAB_TEST_TMP) / "narrow";
+  std::filesystem::create_directories(dir);
+  GenerateContext ctx;
+  ctx.out_dir = dir;
+  const Family* demo = find_family("demo");
+  REQUIRE(demo);
+  const auto wide = demo->generate({{"y_range", {0.0, 1.5}}, {"y_step", 0.1}}, ctx).at(0);
+  const auto narrow = demo->generate({{"y_range", {0.0, 0.5}}, {"y_step", 0.1}}, ctx).at(0);
+  CHECK(wide.shape.at(1) == 16);
+  CHECK(narrow.shape.at(1) == 6);
+  CHECK(narrow.bytes < wide.bytes);
+  CHECK(narrow.max_abs_error <= 1.5 * wide.max_abs_error);
+  CHECK(narrow.max_abs_error > 0.1 * wide.max_abs_error);
 }
