@@ -42,6 +42,9 @@ long long EntryReader::integer(const std::string& key, long long fallback, long 
   if (!j) return fallback;
   if (!j->is_number_integer())
     throw ManifestError(key_path(key) + ": expected an integer, got " + (j->is_number() ? "a non-integer number" : type_name(*j)));
+  if (j->is_number_unsigned() && j->get<unsigned long long>() > static_cast<unsigned long long>(hi))
+    throw ManifestError(key_path(key) + " = " + std::to_string(j->get<unsigned long long>()) + " is outside [" +
+                        std::to_string(lo) + ", " + std::to_string(hi) + "]");
   const long long v = j->get<long long>();
   if (v < lo || v > hi)
     throw ManifestError(key_path(key) + " = " + std::to_string(v) + " is outside [" + std::to_string(lo) + ", " +

@@ -39,12 +39,12 @@ void parallel_rows(std::size_t n, const GenerateContext& ctx, const std::string&
     }
     try {
       body(i);
+      const std::size_t d = ++done;
+      if (omp_get_thread_num() == 0) ctx.report(stage, static_cast<double>(d) / static_cast<double>(n));
     } catch (...) {
       std::lock_guard lock(error_mutex);
       if (!error) error = std::current_exception();
     }
-    const std::size_t d = ++done;
-    if (omp_get_thread_num() == 0) ctx.report(stage, static_cast<double>(d) / static_cast<double>(n));
   }
   if (error) std::rethrow_exception(error);
   ctx.report(stage, 1.0);

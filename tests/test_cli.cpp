@@ -121,6 +121,12 @@ TEST_CASE("eval: bad rows exit 2 naming the row, the column, the value and the d
   r = run_cli("eval demo_exp_cos --method fit", "x,y\n0.5,0.1\n");
   CHECK(r.status == 2);
   CHECK(r.err.find("no method 'fit'") != std::string::npos);
+  r = run_cli("eval demo_exp_cos", "x,y\n\n0.5,0.1\n\n0.5,abc\n");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("row 2 (line 5), column 'y'") != std::string::npos);  // blank lines count as lines
+  r = run_cli("eval demo_exp_cos", "x,y,x\n0.5,0.1,0.7\n");
+  CHECK(r.status == 2);
+  CHECK(r.err.find("column 'x' appears twice") != std::string::npos);
   r = run_cli("eval no_such_quantity", "x\n1\n");
   CHECK(r.status == 2);
   CHECK(r.err.find("unknown quantity 'no_such_quantity'") != std::string::npos);

@@ -217,3 +217,25 @@ TEST_CASE("axis transforms invert exactly enough and map [0, inf] onto a finite 
   CHECK(a.value(8) == INFINITY);
   CHECK(a.value(4) == doctest::Approx(0.5));  // u = 1/2 <=> x = k
 }
+
+TEST_CASE("clamping happens in x, before the transform: folded and reversed axes clamp to the right edge") {
+  // sqrt(1-x) is undefined above 1 and x/(k+x) folds negative x onto large u.
+  const std::vector<Axis> axes = {make_axis("b", Transform::sqrt_one_minus, 0.0, 1.0, 9)};
+  const Table t = make_table(axes, [](const double* x) { return x[0]; }, Storage::float64, Interpolation::cubic);
+  CHECK(t(1.0001) == doctest::Approx(1.0));
+  CHECK(t(-3.0) == doctest::Approx(0.0));
+  const std::vector<Axis> ax2 = {make_axis("a", Transform::x_over_k_plus_x, 0.0, INFINITY, 9, 1.0)};
+  const Table t2 = make_table(ax2, [](const double* x) { return 1.0 / (1.0 + x[0]); }, Storage::float64,
+                              Interpolation::linear);
+  CHECK(t2(-2.0) == doctest::Approx(1.0));
+  CHECK(t2(-INFINITY) == doctest::Approx(1.0));
+  CHECK(t2(INFINITY) == doctest::Approx(0.0));
+  CHECK(std::isnan(t2(NAN)));
+}
+
+TEST_CASE("empty tables and degenerate axes are errors, not undefined behaviour") {
+  const Table empty;
+  const double x = 0.5;
+  CHECK_THROWS_AS(empty.eval({&x, 1}), std::logic_error);
+  CHECK_THROWS_AS(make_axis("tiny", Transform::identity, 0.0, 1e-310, 3), std::invalid_argument);
+}

@@ -34,6 +34,8 @@ TEST_CASE("manifest errors name the key") {
   CHECK(error_of(with_demo({{"x_points", "ten"}})) == "tables.demo.x_points: expected an integer, got string");
   CHECK(error_of(with_demo({{"x_points", 2.5}})) == "tables.demo.x_points: expected an integer, got a non-integer number");
   CHECK(error_of(with_demo({{"x_points", 1}})) == "tables.demo.x_points = 1 is outside [4, 4096]");
+  CHECK(error_of(with_demo({{"x_points", 18446744073709551615ULL}})) ==
+        "tables.demo.x_points = 18446744073709551615 is outside [4, 4096]");
   CHECK(error_of(with_demo({{"precision", "float16"}})) ==
         "tables.demo.precision = \"float16\" is not one of: float32, float64");
   CHECK(error_of(with_demo(json::array())) == "tables.demo: expected an object, got array");

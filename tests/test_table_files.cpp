@@ -250,3 +250,82 @@ TEST_CASE("a lazy table set loads a dataset on first use only") {
   CHECK_THROWS_AS(set.table("t.h5", "C"), lookup::TableFileError);
   CHECK_THROWS_AS(lookup::TableSet(dir / "missing"), lookup::TableFileError);
 }
+
+TEST_CASE("axes near a transform's singular end round-trip (c -> 1+ and c -> 1- axes)") {
+  const fs::path dir = fresh_dir("singular_axes");
+  const std::vector<lookup::Axis> axes = {
+      lookup::make_axis("c1", lookup::Transform::log_x_minus_1, 1.0 + 1e-10, 2.0, 50),
+      lookup::make_axis("c2", lookup::Transform::sqrt_one_minus, 0.999999, 1.0, 100)};
+  std::vector<double> v(5000, 1.0);
+  tablewrite::write_table_file(dir / "t.h5", {{lookup::Table("T", axes, v, lookup::Storage::float32,
+                                                             lookup::Interpolation::linear), "t", {}}});
+  const auto t = lookup::load_table(dir / "t.h5", "T");
+  CHECK(t.table.axis(0).n == 50);
+  CHECK(t.table.axis(1).x_lo == 0.999999);
+}
+
+TEST_CASE("degenerate shapes and mistyped attributes are reported, not crashed on") {
+  const fs::path dir = fresh_dir("degenerate");
+  {
+    hid_t f = H5Fcreate((dir / "one.h5").c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    hsize_t dims[2] = {1, 3};
+    hid_t sp = H5Screate_simple(2, dims, nullptr);
+    hid_t d = H5Dcreate2(f, "H_test", H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    double v[3] = {1, 2, 3};
+    H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v);
+    hid_t asp = H5Screate(H5S_SCALAR);
+    hid_t a = H5Acreate2(d, "schema_version", H5T_STD_I64LE, asp, H5P_DEFAULT, H5P_DEFAULT);
+    long long one = 1;
+    H5Awrite(a, H5T_NATIVE_LLONG, &one);
+    H5Aclose(a);
+    hid_t st = H5Tcopy(H5T_C_S1);
+    H5Tset_size(st, 7);
+    a = H5Acreate2(d, "interpolation", st, asp, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(a, st, "linear");
+    H5Aclose(a);
+    H5Tclose(st);
+    H5Sclose(asp);
+    H5Dclose(d);
+    H5Sclose(sp);
+    H5Fclose(f);
+    const auto msg = error_of([&] { lookup::load_table(dir / "one.h5", "H_test"); });
+    CHECK(msg.find("dimension 0 has length 1") != std::string::npos);
+  }
+  {
+    tablewrite::write_table_file(dir / "t.h5", {sample_dataset()});
+    hid_t f = H5Fopen((dir / "t.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    hid_t d = H5Dopen2(f, "H_test", H5P_DEFAULT);
+    H5Adelete(d, "schema_version");
+    hid_t sp = H5Screate(H5S_SCALAR);
+    hid_t a = H5Acreate2(d, "schema_version", H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT);
+    const double v = 1.9;
+    H5Awrite(a, H5T_NATIVE_DOUBLE, &v);
+    H5Aclose(a);
+    H5Sclose(sp);
+    H5Dclose(d);
+    H5Fclose(f);
+    const auto msg = error_of([&] { lookup::load_table(dir / "t.h5", "H_test"); });
+    CHECK(msg.find("schema_version is a floating-point number, expected the integer 1") != std::string::npos);
+  }
+}
+
+TEST_CASE("an ignored signal stays ignored while a table is written (nohup)") {
+  const fs::path dir = fresh_dir("nohup");
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::signal(SIGHUP, SIG_IGN);
+    try {
+      tablewrite::TempFile temp(dir / "t.h5");
+      std::ofstream(temp.path()) << "data";
+      ::kill(::getpid(), SIGHUP);
+      temp.commit();
+    } catch (...) {
+      _exit(3);
+    }
+    _exit(fs::exists(dir / "t.h5") ? 0 : 4);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+}

@@ -66,6 +66,12 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
     return 2;
   }
   const auto header = split_csv_line(line);
+  for (std::size_t c = 0; c < header.size(); ++c)
+    for (std::size_t c2 = c + 1; c2 < header.size(); ++c2)
+      if (header[c] == header[c2]) {
+        err << "brdftab eval " << q->name << ": header (line 1): column '" << header[c] << "' appears twice\n";
+        return 2;
+      }
   std::vector<int> column_of(q->parameters.size(), -1);
   for (std::size_t i = 0; i < q->parameters.size(); ++i) {
     for (std::size_t c = 0; c < header.size(); ++c)
@@ -79,15 +85,18 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
 
   // Read and check every row.
   std::vector<std::vector<std::string>> cells;
+  std::vector<std::size_t> line_of_row;  // physical line numbers (blank lines are skipped)
   std::vector<double> inputs;
-  std::size_t row = 0;
+  std::size_t row = 0, line_no = 1;
   const std::size_t np = q->parameters.size();
   while (std::getline(in, line)) {
+    ++line_no;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank line
     ++row;
+    line_of_row.push_back(line_no);
     auto c = split_csv_line(line);
     if (c.size() != header.size()) {
-      err << "brdftab eval " << q->name << ": row " << row << " (line " << row + 1 << "): " << c.size()
+      err << "brdftab eval " << q->name << ": row " << row << " (line " << line_no << "): " << c.size()
           << " cells, the header has " << header.size() << "\n";
       return 2;
     }
@@ -97,7 +106,7 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
       const auto v = parse_number(cell);
       std::string problem = v ? domain_problem(p, *v) : "is not a number";
       if (!problem.empty()) {
-        err << "brdftab eval " << q->name << ": row " << row << " (line " << row + 1 << "), column '" << p.name
+        err << "brdftab eval " << q->name << ": row " << row << " (line " << line_no << "), column '" << p.name
             << "': value '" << cell << "' " << problem << " " << p.domain << "\n";
         return 2;
       }
@@ -122,7 +131,7 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
       }
       method->second(std::span<const double>(inputs.data() + r * np, np), result, ctx);
     } catch (const std::exception& e) {
-      err << "brdftab eval " << q->name << " --method " << o.method << ": row " << r + 1 << " (line " << r + 2
+      err << "brdftab eval " << q->name << " --method " << o.method << ": row " << r + 1 << " (line " << line_of_row[r]
           << "): " << e.what() << "\n";
       return 2;
     }

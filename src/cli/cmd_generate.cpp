@@ -70,6 +70,9 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
   } catch (const gen::ManifestError& e) {
     err << "brdftab generate: " << e.what() << "\n";
     return 2;
+  } catch (const std::exception& e) {
+    err << "brdftab generate: " << e.what() << "\n";
+    return 1;
   }
   if (o.threads > 0) omp_set_num_threads(o.threads);
   StderrProgress progress(err, isatty(STDERR_FILENO) != 0, o.quiet);

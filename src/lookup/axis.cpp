@@ -91,9 +91,9 @@ Axis make_axis(std::string name, Transform t, double x_lo, double x_hi, int n, d
   a.u0 = apply_transform(t, x_lo, scale);
   const double u1 = apply_transform(t, x_hi, scale);
   a.du = (u1 - a.u0) / (n - 1);
-  if (!(a.du != 0) || !std::isfinite(a.du))
-    throw std::invalid_argument(where + ": transformed range is degenerate");
   a.inv_du = 1.0 / a.du;
+  if (!(a.du != 0) || !std::isfinite(a.du) || !std::isfinite(a.inv_du))
+    throw std::invalid_argument(where + ": transformed range is degenerate (grid step " + fmt(a.du) + ")");
   return a;
 }
 

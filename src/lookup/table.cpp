@@ -31,6 +31,10 @@ std::string fmt(double v) {
 // Identity = true skips the transform (all-identity tables take this path).
 template <int K, bool Identity, class Map>
 inline void stencil(const Map& a, double x, int& base, double* w) {
+  // Clamp in x first (a transform may reverse or fold the axis outside its range), keeping
+  // NaN as NaN; the clamp in t below then guards rounding and maps NaN to 0.
+  x = x < a.x_lo ? a.x_lo : x;
+  x = x > a.x_hi ? a.x_hi : x;
   const double u = Identity ? x : apply_transform(a.transform, x, a.k);
   double t = (u - a.u0) * a.inv_du;
   t = t > 0 ? t : 0;  // also maps NaN to 0 (the caller returns NaN for NaN input)
@@ -176,6 +180,8 @@ Table::Table(std::string name, std::vector<Axis> axes, std::span<const double> v
                                   " interpolation needs at least " + std::to_string(min_points));
     axes_[d] = std::move(axes[d]);
     size *= static_cast<std::size_t>(axes_[d].n);
+    if (size > kMaxTableSize)
+      throw std::invalid_argument(where + ": more than " + std::to_string(kMaxTableSize) + " values");
   }
   size_ = size;
   std::size_t stride = 1;
@@ -203,7 +209,7 @@ Table::Table(std::string name, std::vector<Axis> axes, std::span<const double> v
   bool identity = true;
   for (int d = 0; d < rank_; ++d) {
     const Axis& a = axes_[d];
-    maps_[d] = AxisMap{a.u0, a.inv_du, a.scale, static_cast<double>(a.n - 1), a.n, a.transform};
+    maps_[d] = AxisMap{a.x_lo, a.x_hi, a.u0, a.inv_du, a.scale, static_cast<double>(a.n - 1), a.n, a.transform};
     identity = identity && a.transform == Transform::identity;
   }
   const bool cubic = interpolation_ == Interpolation::cubic;
@@ -243,6 +249,7 @@ double Table::eval(std::span<const double> x, OutOfDomain policy) const {
   if (static_cast<int>(x.size()) != rank_)
     throw std::invalid_argument("table '" + name_ + "': query of rank " + std::to_string(x.size()) +
                                 ", table rank " + std::to_string(rank_));
+  if (!kernel_) throw std::logic_error("query on an empty (default-constructed) table");
   check_point(x.data(), policy);
   return kernel_(*this, x.data());
 }
@@ -252,6 +259,7 @@ void Table::eval_batch(std::span<const double> points, std::span<double> out, Ou
     throw std::invalid_argument("table '" + name_ + "': batch of " + std::to_string(points.size()) +
                                 " coordinates for " + std::to_string(out.size()) + " outputs of rank " +
                                 std::to_string(rank_));
+  if (!kernel_) throw std::logic_error("query on an empty (default-constructed) table");
   const double* p = points.data();
   const std::size_t n = out.size();
   if (policy == OutOfDomain::error)

@@ -37,6 +37,8 @@ class DomainError : public std::domain_error {
 };
 
 inline constexpr int kMaxRank = 4;
+// Largest table accepted (values), far above any real table; guards size arithmetic.
+inline constexpr std::size_t kMaxTableSize = std::size_t(1) << 31;
 
 class Table {
  public:
@@ -80,7 +82,7 @@ class Table {
   using BatchKernel = void (*)(const Table&, const double* points, std::size_t n, double* out);
   // What a query needs of an axis, packed together (the Axis itself holds strings).
   struct AxisMap {
-    double u0, inv_du, k, tmax;
+    double x_lo, x_hi, u0, inv_du, k, tmax;
     int n;
     Transform transform;
   };

@@ -161,7 +161,14 @@ Axis read_axis(const std::filesystem::path& file, const std::string& dataset, hi
   }
   double k = 1.0;
   if (auto it = attrs.find("scale"); it != attrs.end()) {
-    if (auto d = std::get_if<double>(&it->second)) k = *d;
+    if (auto d = std::get_if<double>(&it->second))
+      k = *d;
+    else if (auto i = std::get_if<long long>(&it->second))
+      k = static_cast<double>(*i);
+    else
+      fail(file, dataset, where + ": attribute 'scale' is a string, expected a number");
+  } else if (t == Transform::x_over_k_plus_x) {
+    fail(file, dataset, where + ": transform x/(k+x) needs the attribute 'scale' (k)");
   }
   Hid space(H5Dget_space(scale), H5Sclose);
   if (H5Sget_simple_extent_ndims(space) != 1) fail(file, dataset, where + " is not one-dimensional");
@@ -170,6 +177,8 @@ Axis read_axis(const std::filesystem::path& file, const std::string& dataset, hi
   if (n != expected_n)
     fail(file, dataset, where + " has " + std::to_string(n) + " values, the dataset has " +
                             std::to_string(expected_n) + " along that dimension");
+  if (n < 2) fail(file, dataset, where + " has " + std::to_string(n) + " values; an axis needs at least 2");
+  if (n > kMaxTableSize) fail(file, dataset, where + " has " + std::to_string(n) + " values, more than supported");
   std::vector<double> x(n);
   if (H5Dread(scale, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, x.data()) < 0)
     fail(file, dataset, where + ": cannot read its values (truncated or corrupt file)");
@@ -183,14 +192,16 @@ Axis read_axis(const std::filesystem::path& file, const std::string& dataset, hi
   } catch (const std::exception& e) {
     fail(file, dataset, where + ": " + e.what());
   }
-  // The grid must be regular in the transformed coordinate.
-  const double span = std::abs(a.du) * (n - 1);
+  // The grid must be regular in the transformed coordinate: each value must sit where the
+  // regular grid in u puts it, to within 1e-9 of the local grid spacing (measured in x, so
+  // that ill-conditioned transforms near their singular end, like sqrt(1-x) at x = 1, are
+  // judged fairly).
   for (hsize_t i = 1; i + 1 < n; ++i) {
-    const double u = apply_transform(t, x[i], k);
-    const double expect = a.u0 + static_cast<double>(i) * a.du;
-    if (!std::isfinite(x[i]) || !(std::abs(u - expect) <= 1e-9 * span))
+    const double expect = a.value(static_cast<int>(i));
+    const double local_step = std::min(std::abs(x[i + 1] - x[i]), std::abs(x[i] - x[i - 1]));
+    if (!std::isfinite(x[i]) || !(std::abs(x[i] - expect) <= 1e-9 * local_step))
       fail(file, dataset, where + " is not a regular grid in " + tname + " at index " + std::to_string(i) +
-                              " (value " + fmt(x[i]) + ")");
+                              " (value " + fmt(x[i]) + ", expected " + fmt(expect) + ")");
   }
   return a;
 }
@@ -226,8 +237,8 @@ std::map<std::string, Attribute> file_attributes(const std::filesystem::path& fi
   return read_attributes(f);
 }
 
-LoadedTable load_table(const std::filesystem::path& file, const std::string& dataset) {
-  std::lock_guard lock(detail::hdf5_mutex());
+namespace {
+LoadedTable load_table_locked(const std::filesystem::path& file, const std::string& dataset) {
   detail::silence_hdf5_errors();
   Hid f = open_file(file);
   if (H5Lexists(f, dataset.c_str(), H5P_DEFAULT) <= 0) fail(file, dataset, "no such dataset");
@@ -242,10 +253,11 @@ LoadedTable load_table(const std::filesystem::path& file, const std::string& dat
 
   auto sv = attrs.find("schema_version");
   if (sv == attrs.end()) fail(file, dataset, "missing attribute 'schema_version' (not a brdftab table?)");
-  const long long version = std::holds_alternative<long long>(sv->second) ? std::get<long long>(sv->second)
-                            : std::holds_alternative<double>(sv->second)
-                                ? static_cast<long long>(std::get<double>(sv->second))
-                                : -1;
+  if (!std::holds_alternative<long long>(sv->second))
+    fail(file, dataset, std::string("schema_version is a ") +
+                            (std::holds_alternative<double>(sv->second) ? "floating-point number" : "string") +
+                            ", expected the integer " + std::to_string(kSchemaVersion));
+  const long long version = std::get<long long>(sv->second);
   if (version != kSchemaVersion)
     fail(file, dataset, "schema_version is " + std::to_string(version) + ", this library reads version " +
                             std::to_string(kSchemaVersion));
@@ -270,12 +282,14 @@ LoadedTable load_table(const std::filesystem::path& file, const std::string& dat
   hsize_t dims[kMaxRank] = {};
   H5Sget_simple_extent_dims(space, dims, nullptr);
 
-  std::vector<Axis> axes;
   std::size_t total = 1;
   for (int dim = 0; dim < rank; ++dim) {
-    axes.push_back(read_axis(file, dataset, d, static_cast<unsigned>(dim), dims[dim]));
-    total *= static_cast<std::size_t>(dims[dim]);
+    if (dims[dim] < 2 || dims[dim] > kMaxTableSize || (total *= static_cast<std::size_t>(dims[dim])) > kMaxTableSize)
+      fail(file, dataset, "dimension " + std::to_string(dim) + " has length " + std::to_string(dims[dim]) +
+                              " (need 2 or more, and at most " + std::to_string(kMaxTableSize) + " values in all)");
   }
+  std::vector<Axis> axes;
+  for (int dim = 0; dim < rank; ++dim) axes.push_back(read_axis(file, dataset, d, static_cast<unsigned>(dim), dims[dim]));
   std::vector<double> values(total);
   if (H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
     fail(file, dataset, "cannot read the values (truncated or corrupt file)");
@@ -285,6 +299,17 @@ LoadedTable load_table(const std::filesystem::path& file, const std::string& dat
     fail(file, dataset, e.what());
   }
   return out;
+}
+
+}  // namespace
+
+LoadedTable load_table(const std::filesystem::path& file, const std::string& dataset) {
+  std::lock_guard lock(detail::hdf5_mutex());
+  try {
+    return load_table_locked(file, dataset);
+  } catch (const std::bad_alloc&) {
+    fail(file, dataset, "not enough memory to load it (corrupt sizes?)");
+  }
 }
 
 }  // namespace brdftab::lookup

@@ -132,7 +132,8 @@ void write_table_file(const std::filesystem::path& path, const std::vector<Datas
     std::lock_guard lock(lookup::detail::hdf5_mutex());
     lookup::detail::silence_hdf5_errors();
     {
-      Hid file(H5Fcreate(temp.path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+      // Exclusive create: never follows or reuses an existing path.
+      Hid file(H5Fcreate(temp.path().c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
       if (!file.valid()) throw WriteError("cannot create the file (folder not writable?)");
       const std::string created = utc_now();
       std::map<std::string, AttributeValue> fattrs = file_attributes;
@@ -143,8 +144,9 @@ void write_table_file(const std::filesystem::path& path, const std::vector<Datas
       if (!axes.valid()) throw WriteError("cannot create group /axes");
       for (const auto& ds : datasets) write_dataset(file, axes, ds, created);
       check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush");
+      check(H5Fclose(file.release()), "cannot close (disk full?)");
     }
-  } catch (const WriteError& e) {
+  } catch (const std::exception& e) {
     throw std::runtime_error("writing table file '" + path.string() + "': " + e.what());
   }
   temp.commit();

@@ -34,6 +34,8 @@ class Hid {
     id_ = H5I_INVALID_HID;
   }
   hid_t get() const { return id_; }
+  // Gives up ownership without closing.
+  hid_t release() { return std::exchange(id_, H5I_INVALID_HID); }
   bool valid() const { return id_ >= 0; }
   operator hid_t() const { return id_; }
 
