@@ -7,11 +7,13 @@
 namespace brdftab::gen {
 
 std::unique_ptr<Family> make_demo_family();
+std::unique_ptr<Family> make_smith_gbeckmann_family();
 
 const std::vector<std::unique_ptr<Family>>& all_families() {
   static const std::vector<std::unique_ptr<Family>> families = [] {
     std::vector<std::unique_ptr<Family>> v;
     v.push_back(make_demo_family());
+    v.push_back(make_smith_gbeckmann_family());
     return v;
   }();
   return families;

@@ -4,6 +4,7 @@
 namespace brdftab::cli {
 
 std::vector<Quantity> demo_quantities();
+std::vector<Quantity> smith_gbeckmann_quantities();
 
 const std::vector<Quantity>& all_quantities() {
   static const std::vector<Quantity> quantities = [] {
@@ -12,6 +13,7 @@ const std::vector<Quantity>& all_quantities() {
       for (auto& q : v) all.push_back(std::move(q));
     };
     add(demo_quantities());
+    add(smith_gbeckmann_quantities());
     return all;
   }();
   return quantities;

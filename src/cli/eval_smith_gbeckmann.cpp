@@ -1,0 +1,42 @@
+// `brdftab eval smith_gb`: Smith Lambda and G1 of the generalized Beckmann distribution
+// (Holzschuch & Pacanowski, Sec. 4.2, Eq. 41-42). Columns p, a -> Lambda, G1.
+//   exact: single-integral Lambda (numerics/smith_gbeckmann_lambda.hpp), p in [0.1, 10].
+//   table: G1 from tables/smith_gbeckmann.h5 (G1_precise), Lambda = 1/G1 - 1; p within the
+//          table's range (default [0.25, 4]).
+#include <cmath>
+#include <limits>
+
+#include "cli/quantity.hpp"
+#include "generators/smith_gbeckmann.hpp"
+#include "lookup/smith_gbeckmann_g1.hpp"
+#include "lookup/table_set.hpp"
+#include "numerics/smith_gbeckmann_lambda.hpp"
+
+namespace brdftab::cli {
+
+std::vector<Quantity> smith_gbeckmann_quantities() {
+  Quantity q;
+  q.name = "smith_gb";
+  q.description =
+      "Smith Lambda and G1 = 1/(1+Lambda) of the generalized Beckmann NDF, a = beta tan(theta) "
+      "(Holzschuch & Pacanowski Eq. 41-42)";
+  q.parameters = {{"p", numerics::kGBeckmannPMin, numerics::kGBeckmannPMax, false, false, false,
+                   numerics::kGBeckmannPDomain},
+                  {"a", 0.0, INFINITY, false, false, false, "[0, inf]"}};
+  q.outputs = {"Lambda", "G1"};
+  q.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
+    out[0] = numerics::smith_gbeckmann_lambda(in[1], in[0]);
+    out[1] = numerics::smith_gbeckmann_g1(in[1], in[0]);
+  };
+  q.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
+    const lookup::Table& t = ctx.tables->table(gen::kSmithGBeckmannFile, gen::kSmithGBeckmannPrecise);
+    const double p = in[0], a = in[1];
+    const double g1 = lookup::smith_gbeckmann_g1(t, a, p, lookup::smith_gbeckmann_a_scale(p),
+                                                 lookup::OutOfDomain::error);
+    out[1] = g1;
+    out[0] = g1 > 0.0 ? 1.0 / g1 - 1.0 : std::numeric_limits<double>::infinity();
+  };
+  return {q};
+}
+
+}  // namespace brdftab::cli
