@@ -1,0 +1,121 @@
+// `brdftab bench` group smith_gbeckmann, side by side in one run: exact Lambda by the
+// single-integral form against the printed double integral (Eq. 41 with Eq. 9), G1 table
+// lookups (compact and precise), the Beckmann closed form, and the time to generate the
+// default table file. Accuracy goes into counters (max error against the exact numerics
+// at the benchmark points).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "generators/family.hpp"
+#include "generators/smith_gbeckmann.hpp"
+#include "lookup/smith_gbeckmann_g1.hpp"
+#include "lookup/table_file.hpp"
+#include "numerics/smith_beckmann_closed_form.hpp"
+#include "numerics/smith_gbeckmann_lambda.hpp"
+#include "validate/bench.hpp"
+
+namespace brdftab::validate {
+
+namespace {
+
+// Benchmark points: p log-uniform in [0.25, 4], a = tan(theta) with theta uniform in
+// [0.05, 1.5] (Lambda between ~1e-300 and ~1e3: the whole masking range).
+struct Points {
+  std::vector<double> p, a, m1, g1_exact;
+};
+
+std::shared_ptr<Points> make_points(std::size_t n) {
+  auto pts = std::make_shared<Points>();
+  std::mt19937_64 rng(4242);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double p = 0.25 * std::pow(16.0, uni(rng));
+    const double a = std::tan(0.05 + 1.45 * uni(rng));
+    pts->p.push_back(p);
+    pts->a.push_back(a);
+    pts->m1.push_back(numerics::gbeckmann_first_moment(p));
+    pts->g1_exact.push_back(numerics::smith_gbeckmann_g1(a, p));
+  }
+  return pts;
+}
+
+void per_call(benchmark::State& state, std::size_t calls) {
+  state.counters["ns_per_call"] = benchmark::Counter(
+      static_cast<double>(calls), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+}  // namespace
+
+void register_smith_gbeckmann_benchmarks(const BenchContext& ctx) {
+  auto pts = make_points(256);
+
+  benchmark::RegisterBenchmark("smith_gb/exact/lambda_single_integral", [pts](benchmark::State& state) {
+    for (auto _ : state)
+      for (std::size_t i = 0; i < pts->p.size(); ++i)
+        benchmark::DoNotOptimize(numerics::smith_gbeckmann_lambda(pts->a[i], pts->p[i]));
+    per_call(state, pts->p.size());
+  })->Unit(benchmark::kMicrosecond);
+
+  // The printed double integral is ~100x slower: a smaller set of points.
+  auto few = make_points(8);
+  benchmark::RegisterBenchmark("smith_gb/exact/lambda_double_integral", [few](benchmark::State& state) {
+    double max_rel = 0;
+    for (auto _ : state)
+      for (std::size_t i = 0; i < few->p.size(); ++i) {
+        const double d = numerics::smith_gbeckmann_lambda_double_integral(few->a[i], few->p[i]);
+        benchmark::DoNotOptimize(d);
+        const double s = numerics::smith_gbeckmann_lambda(few->a[i], few->p[i]);
+        if (d > 1e-250) max_rel = std::max(max_rel, std::abs(s - d) / d);
+      }
+    per_call(state, few->p.size());
+    state.counters["max_rel_diff_vs_single"] = max_rel;
+  })->Unit(benchmark::kMillisecond);
+
+  benchmark::RegisterBenchmark("smith_gb/closed_form/beckmann_lambda", [pts](benchmark::State& state) {
+    for (auto _ : state)
+      for (std::size_t i = 0; i < pts->p.size(); ++i) benchmark::DoNotOptimize(numerics::beckmann_lambda(pts->a[i]));
+    per_call(state, pts->p.size());
+  });
+
+  // Table lookups: the committed tables if present (--tables DIR), else nothing.
+  const auto file = ctx.tables_dir / gen::kSmithGBeckmannFile;
+  if (std::filesystem::exists(file)) {
+    for (const char* dataset : {gen::kSmithGBeckmannCompact, gen::kSmithGBeckmannPrecise}) {
+      auto table = std::make_shared<lookup::LoadedTable>(lookup::load_table(file, dataset));
+      benchmark::RegisterBenchmark((std::string("smith_gb/table/") + dataset).c_str(),
+                                   [pts, table](benchmark::State& state) {
+                                     for (auto _ : state)
+                                       for (std::size_t i = 0; i < pts->p.size(); ++i)
+                                         benchmark::DoNotOptimize(lookup::smith_gbeckmann_g1(
+                                             table->table, pts->a[i], pts->p[i], pts->m1[i]));
+                                     double max_abs = 0;
+                                     for (std::size_t i = 0; i < pts->p.size(); ++i)
+                                       max_abs = std::max(max_abs, std::abs(lookup::smith_gbeckmann_g1(
+                                                                               table->table, pts->a[i], pts->p[i],
+                                                                               pts->m1[i]) -
+                                                                           pts->g1_exact[i]));
+                                     per_call(state, pts->p.size());
+                                     state.counters["max_abs_err_G1"] = max_abs;
+                                     state.counters["table_bytes"] = static_cast<double>(table->table.bytes());
+                                   });
+    }
+  }
+
+  benchmark::RegisterBenchmark("smith_gb/generate/default_tables", [](benchmark::State& state) {
+    const auto dir = std::filesystem::temp_directory_path() / "brdftab_bench_smith_gbeckmann";
+    std::filesystem::create_directories(dir);
+    const gen::Family* family = gen::find_family("smith_gbeckmann");
+    gen::GenerateContext gctx;
+    gctx.out_dir = dir;
+    for (auto _ : state) benchmark::DoNotOptimize(family->generate(family->default_entry(), gctx));
+    std::filesystem::remove_all(dir);
+  })->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+}
+
+}  // namespace brdftab::validate
