@@ -207,7 +207,7 @@ TEST_CASE("tables and axes reject bad shapes and values with a message naming th
 
 TEST_CASE("axis transforms invert exactly enough and map [0, inf] onto a finite interval") {
   for (auto t : {Transform::identity, Transform::log, Transform::sqrt, Transform::sqrt_one_minus,
-                 Transform::x_over_k_plus_x, Transform::log_x_minus_1}) {
+                 Transform::x_over_k_plus_x, Transform::log_x_minus_1, Transform::fourth_root}) {
     CHECK(transform_from_name(transform_name(t)) == t);
     const double x = t == Transform::log_x_minus_1 ? 1.75 : 0.75;
     CHECK(invert_transform(t, apply_transform(t, x, 3.0), 3.0) == doctest::Approx(x).epsilon(1e-14));

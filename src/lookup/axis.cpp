@@ -9,13 +9,14 @@
 namespace brdftab::lookup {
 
 namespace {
-constexpr std::array<std::pair<Transform, std::string_view>, 6> kTransformNames{{
+constexpr std::array<std::pair<Transform, std::string_view>, 7> kTransformNames{{
     {Transform::identity, "identity"},
     {Transform::log, "log"},
     {Transform::sqrt, "sqrt"},
     {Transform::sqrt_one_minus, "sqrt(1-x)"},
     {Transform::x_over_k_plus_x, "x/(k+x)"},
     {Transform::log_x_minus_1, "log(x-1)"},
+    {Transform::fourth_root, "x^(1/4)"},
 }};
 
 std::string fmt(double v) {
@@ -33,6 +34,7 @@ bool in_transform_domain(Transform t, double x) {
     case Transform::sqrt_one_minus: return x <= 1 && std::isfinite(x);
     case Transform::x_over_k_plus_x: return x >= 0;  // +inf maps to 1
     case Transform::log_x_minus_1: return x > 1 && std::isfinite(x);
+    case Transform::fourth_root: return x >= 0 && std::isfinite(x);
   }
   return false;
 }
@@ -60,6 +62,7 @@ double invert_transform(Transform t, double u, double k) {
     case Transform::sqrt_one_minus: return 1.0 - u * u;
     case Transform::x_over_k_plus_x: return u >= 1.0 ? std::numeric_limits<double>::infinity() : k * u / (1.0 - u);
     case Transform::log_x_minus_1: return 1.0 + std::exp(u);
+    case Transform::fourth_root: { const double u2 = u * u; return u2 * u2; }
   }
   return u;
 }

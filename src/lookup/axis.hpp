@@ -18,10 +18,11 @@ enum class Transform : std::uint8_t {
   sqrt_one_minus,  // u = sqrt(1 - x),     x <= 1   (decreasing)
   x_over_k_plus_x, // u = x / (k + x),     x >= 0, x = +inf allowed (u = 1); k = axis scale > 0
   log_x_minus_1,   // u = ln(x - 1),       x > 1    (c -> 1+ axes)
+  fourth_root,     // u = x^(1/4),         x >= 0   (x log x behaviour at x = 0, e.g. H-functions)
 };
 
 // Names as stored in the `transform` attribute: "identity", "log", "sqrt", "sqrt(1-x)",
-// "x/(k+x)", "log(x-1)".
+// "x/(k+x)", "log(x-1)", "x^(1/4)".
 std::string_view transform_name(Transform t);
 // Throws std::invalid_argument for an unknown name.
 Transform transform_from_name(std::string_view name);
@@ -35,6 +36,7 @@ inline double apply_transform(Transform t, double x, double k) {
     case Transform::sqrt_one_minus: return std::sqrt(1.0 - x);
     case Transform::x_over_k_plus_x: return std::isinf(x) ? 1.0 : x / (k + x);
     case Transform::log_x_minus_1: return std::log(x - 1.0);
+    case Transform::fourth_root: return std::sqrt(std::sqrt(x));
   }
   return x;
 }
