@@ -4,10 +4,12 @@
 namespace brdftab::validate {
 
 void validate_demo(ReportContext& ctx);
+void validate_smith_gbeckmann(ReportContext& ctx);
 
 const std::vector<Validation>& all_validations() {
   static const std::vector<Validation> v = {
       {"demo", &validate_demo},
+      {"smith_gbeckmann", &validate_smith_gbeckmann},
   };
   return v;
 }
