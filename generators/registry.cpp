@@ -8,12 +8,14 @@ namespace brdftab::gen {
 
 std::unique_ptr<Family> make_demo_family();
 std::unique_ptr<Family> make_smith_gbeckmann_family();
+std::unique_ptr<Family> make_hfunc_family();
 
 const std::vector<std::unique_ptr<Family>>& all_families() {
   static const std::vector<std::unique_ptr<Family>> families = [] {
     std::vector<std::unique_ptr<Family>> v;
     v.push_back(make_demo_family());
     v.push_back(make_smith_gbeckmann_family());
+    v.push_back(make_hfunc_family());
     return v;
   }();
   return families;

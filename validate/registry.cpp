@@ -5,11 +5,13 @@ namespace brdftab::validate {
 
 void validate_demo(ReportContext& ctx);
 void validate_smith_gbeckmann(ReportContext& ctx);
+void validate_hfunc(ReportContext& ctx);
 
 const std::vector<Validation>& all_validations() {
   static const std::vector<Validation> v = {
       {"demo", &validate_demo},
       {"smith_gbeckmann", &validate_smith_gbeckmann},
+      {"hfunc", &validate_hfunc},
   };
   return v;
 }

@@ -5,6 +5,7 @@ namespace brdftab::cli {
 
 std::vector<Quantity> demo_quantities();
 std::vector<Quantity> smith_gbeckmann_quantities();
+std::vector<Quantity> hfunc_quantities();
 
 const std::vector<Quantity>& all_quantities() {
   static const std::vector<Quantity> quantities = [] {
@@ -14,6 +15,7 @@ const std::vector<Quantity>& all_quantities() {
     };
     add(demo_quantities());
     add(smith_gbeckmann_quantities());
+    add(hfunc_quantities());
     return all;
   }();
   return quantities;

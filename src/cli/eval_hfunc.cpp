@@ -1,0 +1,83 @@
+// `brdftab eval h_iso` (columns c, mu -> H) and `brdftab eval h_ls` (columns mode, c, mu -> H):
+// Chandrasekhar H-functions, isotropic and Lambertian-sphere pseudo-problems (d'Eon 3.1).
+//   exact: Fok integral (numerics/hfunction_fok.hpp), mu in [0, inf] (mu = inf allowed).
+//   table: tables/hfunc.h5 (precise datasets H_iso, H_ls0, H_ls1, H_ls2), mu within the
+//          table's range (default [0, 1]).
+//   fit:   d'Eon Eq. 37 (mode 0) and Eq. 28-30 (mode 1, corrected, validate/ERRATA.md);
+//          no fit exists for mode 2 or the isotropic H-function.
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include "cli/quantity.hpp"
+#include "generators/hfunc.hpp"
+#include "lookup/table_set.hpp"
+#include "numerics/domain_check.hpp"
+#include "numerics/hfunction_fit.hpp"
+#include "numerics/hfunction_fok.hpp"
+
+namespace brdftab::cli {
+
+namespace {
+
+using numerics::HKind;
+
+// Rows with the same (kind, c) reuse one FokHRow (log K at the nodes).
+double exact_h(HKind kind, double c, double mu) {
+  thread_local std::optional<numerics::FokHRow> cached;
+  if (!cached || cached->characteristic().kind != kind || cached->characteristic().c != c) cached.emplace(kind, c);
+  return (*cached)(mu);
+}
+
+double table_h(HKind kind, double c, double mu, const EvalContext& ctx) {
+  return ctx.tables->table(gen::kHfuncFile, gen::hfunc_dataset(kind, false)).eval2(c, mu, lookup::OutOfDomain::error);
+}
+
+HKind ls_kind(double mode) { return mode == 0 ? HKind::ls0 : mode == 1 ? HKind::ls1 : HKind::ls2; }
+
+Parameter c_parameter() { return {"c", 0.0, 1.0, false, false, false, "[0, 1]"}; }
+Parameter mu_parameter() { return {"mu", 0.0, INFINITY, false, false, false, "[0, inf]"}; }
+
+}  // namespace
+
+std::vector<Quantity> hfunc_quantities() {
+  Quantity iso;
+  iso.name = "h_iso";
+  iso.description = "Chandrasekhar's isotropic H-function H(c, mu), Psi = c/2";
+  iso.parameters = {c_parameter(), mu_parameter()};
+  iso.outputs = {"H"};
+  iso.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
+    out[0] = exact_h(HKind::isotropic, in[0], in[1]);
+  };
+  iso.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
+    out[0] = table_h(HKind::isotropic, in[0], in[1], ctx);
+  };
+  iso.methods["fit"] = [](std::span<const double>, std::span<double>, const EvalContext&) {
+    throw std::invalid_argument(
+        "no fit exists for the isotropic H-function (d'Eon gives fits only for H^(0), Eq. 37, and H^(1), "
+        "Eq. 28-30: use h_ls with mode 0 or 1)");
+  };
+
+  Quantity ls;
+  ls.name = "h_ls";
+  ls.description = "Lambertian-sphere pseudo-problem H-functions H^(mode)(c, mu), mode 0, 1, 2 (d'Eon section 3.1)";
+  ls.parameters = {{"mode", 0.0, 2.0, false, false, true, "{0, 1, 2}"}, c_parameter(), mu_parameter()};
+  ls.outputs = {"H"};
+  ls.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
+    out[0] = exact_h(ls_kind(in[0]), in[1], in[2]);
+  };
+  ls.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
+    out[0] = table_h(ls_kind(in[0]), in[1], in[2], ctx);
+  };
+  ls.methods["fit"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
+    const double mode = in[0], c = in[1], mu = in[2];
+    if (mode == 2)
+      throw std::invalid_argument(
+          "no fit exists for H^(2) (mode 2): d'Eon gives fits only for mode 0 (Eq. 37) and mode 1 (Eq. 28-30)");
+    numerics::require_closed("mu", mu, 0.0, 1.0, "[0, 1] (the fits cover mu in [0, 1] only)");
+    out[0] = mode == 0 ? numerics::deon_h0_fit(c, mu) : numerics::deon_h1_fit(c, mu);
+  };
+  return {iso, ls};
+}
+
+}  // namespace brdftab::cli
