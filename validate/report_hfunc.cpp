@@ -70,8 +70,10 @@ void exact_section(ReportContext& ctx) {
       }
       double integral = 0;
       for (std::size_t j = 0; j < x.size(); ++j) integral += w[j] * m1(x[j]) * m1.characteristic().psi(x[j]);
-      const double expected = 1 - std::sqrt(m1.characteristic().k_at_zero);
-      if (expected > 0) ident = std::max(ident, std::abs(integral / expected - 1));
+      // 1 - sqrt(K(0)) = 2 int Psi / (1 + sqrt(K(0))): no cancellation for small c
+      const auto& ch = m1.characteristic();
+      const double expected = 2 * ch.psi_integral() / (1 + std::sqrt(ch.k_at_zero));
+      if (expected != 0) ident = std::max(ident, std::abs(integral / expected - 1));
     }
     md << "| " << name(kind) << " | " << sci(worst) << " | c = " << numerics::format_number(wc)
        << ", mu = " << wmu << " | " << sci(ident) << " relative |\n";
