@@ -15,6 +15,7 @@
 #include "generators/family.hpp"
 #include "generators/hfunc.hpp"
 #include "generators/manifest.hpp"
+#include "lookup/hfunc_lookup.hpp"
 #include "lookup/table_file.hpp"
 #include "numerics/hfunction_nystrom.hpp"
 
@@ -159,4 +160,22 @@ TEST_CASE("hfunc cli: no fit for mode 2 or the isotropic H; bad input exits 2 na
   r = run_cli("eval h_iso", "c,mu\n-0.1,0.5\n");
   CHECK(r.status == 2);
   CHECK(r.err.find("column 'c': value '-0.1' is outside the valid domain [0, 1]") != std::string::npos);
+}
+
+TEST_CASE("hfunc tables: the inlined HFunctionLookup equals Table::eval2 (same interpolation)") {
+  const fs::path file = fs::path(BRDFTAB_SOURCE_DIR) / "tables" / gen::kHfuncFile;
+  const auto compact = lookup::load_table(file, gen::hfunc_dataset(HKind::ls0, true));
+  const auto precise = lookup::load_table(file, gen::hfunc_dataset(HKind::ls1, false));
+  const lookup::HFunctionLookup<float> fc(compact.table);
+  const lookup::HFunctionLookup<double> fp(precise.table);
+  CHECK_THROWS_AS(lookup::HFunctionLookup<double>(compact.table), std::invalid_argument);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> uni(-0.1, 1.1);  // includes clamped points outside [0, 1]
+  for (int i = 0; i < 2000; ++i) {
+    const double c = uni(rng), mu = uni(rng);
+    CHECK(fc(c, mu) == doctest::Approx(compact.table.eval2(c, mu)).epsilon(1e-15));
+    CHECK(fp(c, mu) == doctest::Approx(precise.table.eval2(c, mu)).epsilon(1e-15));
+  }
+  CHECK(std::isnan(fc(NAN, 0.5)));
+  CHECK(std::isnan(fp(0.5, NAN)));
 }

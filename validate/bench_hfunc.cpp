@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <random>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "generators/family.hpp"
 #include "generators/hfunc.hpp"
+#include "lookup/hfunc_lookup.hpp"
 #include "lookup/table_file.hpp"
 #include "numerics/hfunction_fit.hpp"
 #include "numerics/hfunction_fok.hpp"
@@ -109,6 +111,30 @@ void register_hfunc_benchmarks(const BenchContext& ctx) {
           state.counters["max_rel_err"] = e;
           state.counters["table_bytes"] = static_cast<double>(t.bytes());
         });
+        // The family's inlined lookup (lookup/hfunc_lookup.hpp), same interpolation.
+        if (compact) {
+          auto f = std::make_shared<lookup::HFunctionLookup<float>>(table->table);
+          benchmark::RegisterBenchmark(("hfunc/table_inlined/" + ds).c_str(), [pts, f, is0](benchmark::State& state) {
+            for (auto _ : state)
+              for (std::size_t i = 0; i < pts->c.size(); ++i) benchmark::DoNotOptimize((*f)(pts->c[i], pts->mu[i]));
+            double e = 0;
+            for (std::size_t i = 0; i < pts->c.size(); ++i)
+              e = std::max(e, std::abs((*f)(pts->c[i], pts->mu[i]) / (is0 ? pts->h0[i] : pts->h1[i]) - 1));
+            per_call(state, pts->c.size());
+            state.counters["max_rel_err"] = e;
+          });
+        } else {
+          auto f = std::make_shared<lookup::HFunctionLookup<double>>(table->table);
+          benchmark::RegisterBenchmark(("hfunc/table_inlined/" + ds).c_str(), [pts, f, is0](benchmark::State& state) {
+            for (auto _ : state)
+              for (std::size_t i = 0; i < pts->c.size(); ++i) benchmark::DoNotOptimize((*f)(pts->c[i], pts->mu[i]));
+            double e = 0;
+            for (std::size_t i = 0; i < pts->c.size(); ++i)
+              e = std::max(e, std::abs((*f)(pts->c[i], pts->mu[i]) / (is0 ? pts->h0[i] : pts->h1[i]) - 1));
+            per_call(state, pts->c.size());
+            state.counters["max_rel_err"] = e;
+          });
+        }
         benchmark::RegisterBenchmark(("hfunc/table_batch/" + ds).c_str(), [pts, table](benchmark::State& state) {
           const lookup::Table& t = table->table;
           std::vector<double> xy(2 * pts->c.size()), out(pts->c.size());
