@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -133,6 +134,20 @@ TEST_CASE("hfunc cli: eval h_iso and h_ls with exact, table and fit") {
   REQUIRE(r.status == 0);
   // H^(0)(inf) = 12/sqrt((c-16)(c-1)(4c+9)) = 1.2996728665773...
   CHECK(r.out.find("0,0.5,inf,1.29967286657") != std::string::npos);
+}
+
+TEST_CASE("hfunc cli: moments") {
+  // conservative isotropic: alpha_0 = 2, alpha_1 = 2/sqrt(3) (Chandrasekhar 1960, ch. V)
+  const auto r = run_cli("eval h_iso_moments", "c\n1\n");
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("c,alpha0,alpha1,alpha2,alpha3") != std::string::npos);
+  double c = 0, a0 = 0, a1 = 0;
+  REQUIRE(std::sscanf(r.out.c_str() + r.out.find('\n') + 1, "%lf,%lf,%lf", &c, &a0, &a1) == 3);
+  CHECK(a0 == doctest::Approx(2.0).epsilon(1e-14));
+  CHECK(a1 == doctest::Approx(2.0 / std::sqrt(3.0)).epsilon(1e-14));
+  const auto r2 = run_cli("eval h_ls_moments", "mode,c\n2,0\n");  // c = 0: H = 1, alpha_n = 1/(n+1)
+  REQUIRE(r2.status == 0);
+  CHECK(r2.out.find("2,0,1,0.5,0.33333333333333") != std::string::npos);
 }
 
 TEST_CASE("hfunc cli: no fit for mode 2 or the isotropic H; bad input exits 2 naming row, column, value, domain") {

@@ -5,6 +5,9 @@
 //          table's range (default [0, 1]).
 //   fit:   d'Eon Eq. 37 (mode 0) and Eq. 28-30 (mode 1, corrected, validate/ERRATA.md);
 //          no fit exists for mode 2 or the isotropic H-function.
+// `brdftab eval h_iso_moments` (c -> alpha0..alpha3) and `h_ls_moments` (mode, c -> alpha0..3):
+// the moments alpha_n = int_0^1 H(mu) mu^n dmu (exact only), which the Horak-Chandrasekhar
+// constants of the BRDF need.
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -77,7 +80,26 @@ std::vector<Quantity> hfunc_quantities() {
     numerics::require_closed("mu", mu, 0.0, 1.0, "[0, 1] (the fits cover mu in [0, 1] only)");
     out[0] = mode == 0 ? numerics::deon_h0_fit(c, mu) : numerics::deon_h1_fit(c, mu);
   };
-  return {iso, ls};
+  Quantity iso_m;
+  iso_m.name = "h_iso_moments";
+  iso_m.description = "moments alpha_n = int_0^1 H_iso(c, mu) mu^n dmu, n = 0..3";
+  iso_m.parameters = {c_parameter()};
+  iso_m.outputs = {"alpha0", "alpha1", "alpha2", "alpha3"};
+  iso_m.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
+    const auto m = numerics::h_moments(HKind::isotropic, in[0]);
+    for (int n = 0; n < 4; ++n) out[n] = m[n];
+  };
+
+  Quantity ls_m;
+  ls_m.name = "h_ls_moments";
+  ls_m.description = "moments alpha_n = int_0^1 H^(mode)(c, mu) mu^n dmu, n = 0..3 (Lambertian sphere, d'Eon 3.1)";
+  ls_m.parameters = {{"mode", 0.0, 2.0, false, false, true, "{0, 1, 2}"}, c_parameter()};
+  ls_m.outputs = {"alpha0", "alpha1", "alpha2", "alpha3"};
+  ls_m.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
+    const auto m = numerics::h_moments(ls_kind(in[0]), in[1]);
+    for (int n = 0; n < 4; ++n) out[n] = m[n];
+  };
+  return {iso, ls, iso_m, ls_m};
 }
 
 }  // namespace brdftab::cli
