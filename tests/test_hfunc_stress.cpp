@@ -67,14 +67,12 @@ TEST_CASE("hfunc stress: finite values, bounds and monotonicity over mu in [0, 1
         if (kind == HKind::ls1) CHECK(h <= 1.0);
         else CHECK(h >= 1.0);
         // (b), (c) where Psi has one sign (a few ulps of slack for rounding)
-        if (psi_nonneg) {
-          CHECK(h >= previous * (1 - 4e-16));
-          CHECK(h <= h_inf * (1 + 4e-16));
-        }
-        if (psi_nonpos) {
-          CHECK(h <= previous * (1 + 4e-16));
-          CHECK(h >= h_inf * (1 - 4e-16));
-        }
+        if (psi_nonneg) CHECK(h <= h_inf * (1 + 4e-16));
+        if (psi_nonpos) CHECK(h >= h_inf * (1 - 4e-16));
+        // Monotonicity: derived (b) where Psi has one sign; observed, not derived, for ls0 at
+        // c < 0.0195 and ls1 at c > 0.95 (checked here on 421 mu per c).
+        if (kind == HKind::ls1) CHECK(h <= previous * (1 + 4e-16));
+        else CHECK(h >= previous * (1 - 4e-16));
         previous = h;
       }
     }
