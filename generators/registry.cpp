@@ -9,6 +9,7 @@ namespace brdftab::gen {
 std::unique_ptr<Family> make_demo_family();
 std::unique_ptr<Family> make_smith_gbeckmann_family();
 std::unique_ptr<Family> make_hfunc_family();
+std::unique_ptr<Family> make_ghs_sigma_rel_family();
 
 const std::vector<std::unique_ptr<Family>>& all_families() {
   static const std::vector<std::unique_ptr<Family>> families = [] {
@@ -16,6 +17,7 @@ const std::vector<std::unique_ptr<Family>>& all_families() {
     v.push_back(make_demo_family());
     v.push_back(make_smith_gbeckmann_family());
     v.push_back(make_hfunc_family());
+    v.push_back(make_ghs_sigma_rel_family());
     return v;
   }();
   return families;

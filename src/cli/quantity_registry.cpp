@@ -6,6 +6,7 @@ namespace brdftab::cli {
 std::vector<Quantity> demo_quantities();
 std::vector<Quantity> smith_gbeckmann_quantities();
 std::vector<Quantity> hfunc_quantities();
+std::vector<Quantity> ghs_sigma_rel_quantities();
 
 const std::vector<Quantity>& all_quantities() {
   static const std::vector<Quantity> quantities = [] {
@@ -16,6 +17,7 @@ const std::vector<Quantity>& all_quantities() {
     add(demo_quantities());
     add(smith_gbeckmann_quantities());
     add(hfunc_quantities());
+    add(ghs_sigma_rel_quantities());
     return all;
   }();
   return quantities;

@@ -1,0 +1,52 @@
+// `brdftab eval ghs_sigma_rel2`: the GHS renormalization sigma_rel^2(B, c, s) (Holzschuch &
+// Pacanowski, Eq. 25), B = b/lambda, s = sin(theta_i). Columns B, c, s -> sigma_rel2.
+//   exact: numerics/ghs_sigma_rel.hpp (1-D form, ~1e-14 relative), B in [1e-100, 1e100],
+//          c in (1, 100], s in [0, 1].
+//   table: the 3-D grid of tables/ghs_sigma_rel.h5 (default B in [0.01, 1000], c in [1, 10]);
+//          a point outside the table's ranges is an error naming the parameter.
+#include <cmath>
+#include <string>
+
+#include "cli/quantity.hpp"
+#include "generators/ghs_sigma_rel.hpp"
+#include "lookup/ghs_sigma_rel.hpp"
+#include "lookup/table_set.hpp"
+#include "numerics/domain_check.hpp"
+#include "numerics/ghs_sigma_rel.hpp"
+
+namespace brdftab::cli {
+
+std::vector<Quantity> ghs_sigma_rel_quantities() {
+  Quantity q;
+  q.name = "ghs_sigma_rel2";
+  q.description =
+      "GHS diffraction renormalization sigma_rel^2(B = b/lambda, c, s = sin theta_i): mass of the K-correlation "
+      "spread inside the disk of reachable frequencies (Holzschuch & Pacanowski Eq. 25)";
+  q.parameters = {{"B", numerics::kGhsBMin, numerics::kGhsBMax, false, false, false, numerics::kGhsBDomain},
+                  {"c", 1.0, numerics::kGhsCMax, true, false, false, numerics::kGhsCDomain},
+                  {"s", 0.0, 1.0, false, false, false, numerics::kGhsSDomain}};
+  q.outputs = {"sigma_rel2"};
+  q.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
+    out[0] = numerics::ghs_sigma_rel2(in[0], in[1], in[2]);
+  };
+  q.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
+    const lookup::LoadedTable& t = ctx.tables->get(gen::kGhsSigmaRelFile, gen::kGhsSigmaRelGrid);
+    const double w_scale = t.info.attribute_number("w_scale", lookup::kGhsSigmaRelDefaultWScale);
+    const double B = in[0], c = in[1], s = in[2];
+    const lookup::Axis& aB = t.table.axis(0);
+    const lookup::Axis& aw = t.table.axis(1);
+    const lookup::Axis& ac = t.table.axis(2);
+    auto range = [](const lookup::Axis& a) {
+      return "[" + numerics::format_number(a.x_lo) + ", " + numerics::format_number(a.x_hi) + "] (table range)";
+    };
+    if (!aB.contains(B)) numerics::throw_domain_error("B", B, range(aB));
+    if (!ac.contains(c)) numerics::throw_domain_error("c", c, range(ac));
+    const double w = lookup::ghs_sigma_rel_w(B, s, w_scale);
+    if (!(w >= aw.x_lo - 1e-12 && w <= aw.x_hi + 1e-12))
+      numerics::throw_domain_error("s", s, "covered by the table's w range " + range(aw));
+    out[0] = lookup::ghs_sigma_rel2_grid(t.table, B, c, s, w_scale);
+  };
+  return {q};
+}
+
+}  // namespace brdftab::cli
