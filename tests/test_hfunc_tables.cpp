@@ -95,6 +95,9 @@ TEST_CASE("hfunc tables: manifest entries are checked") {
   CHECK_THROWS_WITH_AS(family->check_entry({{"functions", {"ls3"}}}), doctest::Contains("tables.hfunc.functions[0]"),
                        gen::ManifestError);
   CHECK_THROWS_AS(family->check_entry({{"c_range", {0.5, 1.5}}}), gen::ManifestError);
+  CHECK_THROWS_WITH_AS(family->check_entry({{"compact_linear", {"ls1", 2}}}),
+                       doctest::Contains("tables.hfunc.compact_linear[1]"), gen::ManifestError);
+  CHECK_NOTHROW(family->check_entry({{"compact_linear", nlohmann::json::array()}}));
   CHECK_THROWS_AS(family->check_entry({{"mu_step", 0.1}}), gen::ManifestError);  // unknown key
   CHECK_THROWS_AS(family->check_entry({{"precise", false}, {"compact", false}}), gen::ManifestError);
 }
@@ -177,11 +180,13 @@ TEST_CASE("hfunc cli: no fit for mode 2 or the isotropic H; bad input exits 2 na
   CHECK(r.err.find("column 'c': value '-0.1' is outside the valid domain [0, 1]") != std::string::npos);
 }
 
-TEST_CASE("hfunc tables: the inlined HFunctionLookup equals Table::eval2 (same interpolation)") {
+TEST_CASE("hfunc tables: the inlined HFunctionLookup equals Table::eval2 (same interpolation, cubic and linear)") {
   const fs::path file = fs::path(BRDFTAB_SOURCE_DIR) / "tables" / gen::kHfuncFile;
   const auto compact = lookup::load_table(file, gen::hfunc_dataset(HKind::ls0, true));
   const auto precise = lookup::load_table(file, gen::hfunc_dataset(HKind::ls1, false));
-  const lookup::HFunctionLookup<float> fc(compact.table);
+  const auto linear = lookup::load_table(file, gen::hfunc_dataset(HKind::ls1, true));
+  REQUIRE(linear.table.interpolation() == lookup::Interpolation::linear);
+  const lookup::HFunctionLookup<float> fc(compact.table), fl(linear.table);
   const lookup::HFunctionLookup<double> fp(precise.table);
   CHECK_THROWS_AS(lookup::HFunctionLookup<double>(compact.table), std::invalid_argument);
   std::mt19937_64 rng(3);
@@ -190,6 +195,7 @@ TEST_CASE("hfunc tables: the inlined HFunctionLookup equals Table::eval2 (same i
     const double c = uni(rng), mu = uni(rng);
     CHECK(fc(c, mu) == doctest::Approx(compact.table.eval2(c, mu)).epsilon(1e-15));
     CHECK(fp(c, mu) == doctest::Approx(precise.table.eval2(c, mu)).epsilon(1e-15));
+    CHECK(fl(c, mu) == doctest::Approx(linear.table.eval2(c, mu)).epsilon(1e-15));
   }
   CHECK(std::isnan(fc(NAN, 0.5)));
   CHECK(std::isnan(fp(0.5, NAN)));

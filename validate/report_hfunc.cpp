@@ -251,7 +251,8 @@ double random_point_error(const lookup::Table& t, HKind kind, int rows, int per_
   return w;
 }
 
-lookup::Table memory_table(HKind kind, int nc, int nm, lookup::Transform mu_transform, lookup::Storage storage) {
+lookup::Table memory_table(HKind kind, int nc, int nm, lookup::Transform mu_transform, lookup::Storage storage,
+                           lookup::Interpolation interp = lookup::Interpolation::cubic) {
   const std::vector<lookup::Axis> axes = {lookup::make_axis("c", gen::kHfuncCTransform, 0.0, 1.0, nc),
                                           lookup::make_axis("mu", mu_transform, 0.0, 1.0, nm)};
   std::vector<double> v(static_cast<std::size_t>(nc) * nm);
@@ -260,7 +261,7 @@ lookup::Table memory_table(HKind kind, int nc, int nm, lookup::Transform mu_tran
     const FokHRow h(kind, axes[0].value(i));
     for (int j = 0; j < nm; ++j) v[static_cast<std::size_t>(i) * nm + j] = h(axes[1].value(j));
   }
-  return lookup::Table("H", axes, v, storage, lookup::Interpolation::cubic);
+  return lookup::Table("H", axes, v, storage, interp);
 }
 
 void tables_section(ReportContext& ctx) {
@@ -269,8 +270,8 @@ void tables_section(ReportContext& ctx) {
   md << "Committed tables (" << gen::kHfuncFile << "), max relative error at 300 x 300 random points (c uniform, "
         "uniform in sqrt(1-c), 1-c log-uniform down to 1e-12; mu uniform, uniform in sqrt(mu), log-uniform down "
         "to 1e-14), against the error the generator stored:\n\n"
-        "| dataset | shape | storage | bytes | max rel error (here) | max_rel_error attribute |\n"
-        "|---|---|---|---|---|---|\n";
+        "| dataset | shape | storage | interpolation | bytes | max rel error (here) | max_rel_error attribute |\n"
+        "|---|---|---|---|---|---|---|\n";
   std::vector<std::vector<double>> csv;
   for (HKind kind : kKinds)
     for (bool compact : {false, true}) {
@@ -282,7 +283,8 @@ void tables_section(ReportContext& ctx) {
         const double stored = loaded.info.attribute_number("max_rel_error", NAN);
         const std::string attr = std::isnan(stored) ? "?" : sci(stored);
         md << "| " << ds << " | " << t.axis(0).n << " x " << t.axis(1).n << " | "
-           << lookup::storage_name(t.storage()) << " | " << t.bytes() << " | " << sci(e) << " | " << attr << " |\n";
+           << lookup::storage_name(t.storage()) << " | " << lookup::interpolation_name(t.interpolation()) << " | "
+           << t.bytes() << " | " << sci(e) << " | " << attr << " |\n";
         csv.push_back({double(static_cast<int>(kind)), double(compact), double(t.axis(0).n), double(t.axis(1).n),
                        double(t.bytes()), e});
       } catch (const std::exception& ex) {
@@ -291,13 +293,17 @@ void tables_section(ReportContext& ctx) {
     }
   write_csv(ctx.report_dir / "hfunc_tables.csv", {"kind", "compact", "n_c", "n_mu", "bytes", "max_rel_error"}, csv);
 
-  md << "\nError against resolution and mu-axis transform (H^(0), the hardest; in-memory tables, float64 unless "
-        "noted; c on sqrt(1-c)):\n\n| n_c x n_mu | mu axis | storage | bytes | max rel error |\n|---|---|---|---|---|\n";
+  md << "\nError against resolution, mu-axis transform and interpolation (in-memory tables, c on sqrt(1-c)):\n\n"
+        "| function | n_c x n_mu | mu axis | storage | interpolation | bytes | max rel error |\n"
+        "|---|---|---|---|---|---|---|\n";
   struct Variant {
     int nc, nm;
     lookup::Transform t;
     lookup::Storage s;
+    HKind kind = HKind::ls0;
+    lookup::Interpolation interp = lookup::Interpolation::cubic;
   };
+  using lookup::Interpolation;
   using lookup::Storage;
   using lookup::Transform;
   const std::vector<Variant> variants = {
@@ -305,13 +311,18 @@ void tables_section(ReportContext& ctx) {
       {128, 160, Transform::fourth_root, Storage::float64}, {160, 192, Transform::fourth_root, Storage::float64},
       {96, 160, Transform::fourth_root, Storage::float64},  {64, 64, Transform::sqrt, Storage::float32},
       {64, 64, Transform::fourth_root, Storage::float32},   {32, 64, Transform::fourth_root, Storage::float32},
-      {16, 32, Transform::fourth_root, Storage::float32}};
+      {16, 32, Transform::fourth_root, Storage::float32},
+      {64, 64, Transform::fourth_root, Storage::float32, HKind::ls0, Interpolation::linear},
+      {64, 64, Transform::fourth_root, Storage::float32, HKind::isotropic, Interpolation::linear},
+      {64, 64, Transform::fourth_root, Storage::float32, HKind::ls1, Interpolation::linear},
+      {64, 64, Transform::fourth_root, Storage::float32, HKind::ls2, Interpolation::linear}};
   std::vector<std::vector<double>> res;
   for (const auto& v : variants) {
-    const auto t = memory_table(HKind::ls0, v.nc, v.nm, v.t, v.s);
-    const double e = random_point_error(t, HKind::ls0, 150, 200, 31);
-    md << "| " << v.nc << " x " << v.nm << " | " << lookup::transform_name(v.t) << " | " << lookup::storage_name(v.s)
-       << " | " << t.bytes() << " | " << sci(e) << " |\n";
+    const auto t = memory_table(v.kind, v.nc, v.nm, v.t, v.s, v.interp);
+    const double e = random_point_error(t, v.kind, 150, 200, 31);
+    md << "| " << name(v.kind) << " | " << v.nc << " x " << v.nm << " | " << lookup::transform_name(v.t) << " | "
+       << lookup::storage_name(v.s) << " | " << lookup::interpolation_name(v.interp) << " | " << t.bytes() << " | "
+       << sci(e) << " |\n";
     res.push_back({double(v.nc), double(v.nm), double(v.t == Transform::fourth_root), double(t.bytes()), e});
   }
   write_csv(ctx.report_dir / "hfunc_resolution.csv", {"n_c", "n_mu", "fourth_root_mu", "bytes", "max_rel_error"}, res);
