@@ -97,3 +97,28 @@ TEST_CASE("hfunc stress: method 2 agrees with method 1 at 1 - c = 1e-12 and tiny
       CHECK(std::abs(fok(mu) / nystrom(mu) - 1) < 1e-12);
   }
 }
+
+TEST_CASE("hfunc stress: the sign facts behind the bounds (Psi and its partial integrals)") {
+  // Psi^(0)(1) = c(-40c^2 + 206c - 4)/384 < 0 for 0 < c < 0.01947..., >= 0 above
+  CHECK(make_characteristic(HKind::ls0, 0.01).psi(1.0) < 0);
+  CHECK(make_characteristic(HKind::ls0, 0.0195).psi(1.0) > 0);
+  // Psi^(1) > 0 near x = 1 for c > 0.95, <= 0 everywhere for c <= 0.95
+  CHECK(make_characteristic(HKind::ls1, 1.0).psi(0.999) > 0);
+  for (double c : {0.0, 0.3, 0.95}) {
+    const auto ch = make_characteristic(HKind::ls1, c);
+    for (int i = 0; i <= 1000; ++i) CHECK(ch.psi(i / 1000.0) <= 0);
+  }
+  // Partial integrals int_0^y Psi: >= 0 for ls0, <= 0 for ls1, all c (midpoint rule, fine grid)
+  for (double c : {0.001, 0.01, 0.0194, 0.5, 0.96, 1.0}) {
+    const auto c0 = make_characteristic(HKind::ls0, c), c1 = make_characteristic(HKind::ls1, c);
+    double p0 = 0, p1 = 0;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+      const double x = (i + 0.5) / n;
+      p0 += c0.psi(x) / n;
+      p1 += c1.psi(x) / n;
+      CHECK(p0 >= 0);
+      CHECK(p1 <= 0);
+    }
+  }
+}
