@@ -106,7 +106,7 @@ TEST_CASE("hfunc stress: the sign facts behind the bounds (Psi and its partial i
   CHECK(make_characteristic(HKind::ls1, 1.0).psi(0.999) > 0);
   for (double c : {0.0, 0.3, 0.95}) {
     const auto ch = make_characteristic(HKind::ls1, c);
-    for (int i = 0; i <= 1000; ++i) CHECK(ch.psi(i / 1000.0) <= 0);
+    for (int i = 0; i <= 1000; ++i) CHECK(ch.psi(i / 1000.0) <= 1e-15);  // rounding at the double root x = 1, c = 0.95
   }
   // Partial integrals int_0^y Psi: >= 0 for ls0, <= 0 for ls1, all c (midpoint rule, fine grid)
   for (double c : {0.001, 0.01, 0.0194, 0.5, 0.96, 1.0}) {
