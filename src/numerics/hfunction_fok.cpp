@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 #include "numerics/domain_check.hpp"
 #include "numerics/hfunction_graded_gauss.hpp"
@@ -19,6 +20,9 @@ constexpr double kWindow = 9.9;
 
 FokHRow::FokHRow(const HCharacteristic& ch, const FokOptions& options)
     : ch_(ch), s_min_(options.s_min), step_(options.step) {
+  // t^(-6) and t^4 of the tail sums must stay finite: |s| <= 110.
+  if (!(options.step > 0 && options.s_min >= -110 && options.s_max <= 110 && options.s_min < options.s_max))
+    throw std::invalid_argument("FokHRow: need step > 0 and -110 <= s_min < s_max <= 110");
   const int n = static_cast<int>(std::ceil((options.s_max - options.s_min) / options.step)) + 1;
   t_.resize(n);
   weighted_.resize(n);
@@ -33,8 +37,18 @@ FokHRow::FokHRow(const HCharacteristic& ch, const FokOptions& options)
   for (int m = 0; m < 3; ++m) {
     below_[m].assign(n + 1, 0.0);
     above_[m].assign(n + 1, 0.0);
-    for (int j = 0; j < n; ++j) below_[m][j + 1] = below_[m][j] + weighted_[j] * std::pow(t_[j], 2 * m);
-    for (int j = n - 1; j >= 0; --j) above_[m][j] = above_[m][j + 1] + weighted_[j] * std::pow(t_[j], -2 * m - 2);
+  }
+  for (int j = 0; j < n; ++j) {
+    const double t2 = t_[j] * t_[j];
+    below_[0][j + 1] = below_[0][j] + weighted_[j];
+    below_[1][j + 1] = below_[1][j] + weighted_[j] * t2;
+    below_[2][j + 1] = below_[2][j] + weighted_[j] * t2 * t2;
+  }
+  for (int j = n - 1; j >= 0; --j) {
+    const double inv_t2 = 1.0 / (t_[j] * t_[j]);
+    above_[0][j] = above_[0][j + 1] + weighted_[j] * inv_t2;
+    above_[1][j] = above_[1][j + 1] + weighted_[j] * inv_t2 * inv_t2;
+    above_[2][j] = above_[2][j + 1] + weighted_[j] * inv_t2 * inv_t2 * inv_t2;
   }
 }
 
