@@ -32,10 +32,12 @@
 // The integrand of (2) is analytic on [0, pi]; its complex singularities lie where
 // r^2 = 0 or r^2 = -1/B^2, at distance ~ (1-s)/sqrt(s) and ~ sqrt((1-s)^2 + 1/B^2)/sqrt(s)
 // from tau = 0. We integrate (2) with Gauss-Legendre on panels [0, a], [a, 2a], [2a, 4a],
-// ..., [., pi], with a the smallest of those scales (a = 1 - s, or 1/B when 1 - s is so
-// small that the tau < 1 - s region carries a relative weight below 1e-16): each panel
-// then sees its nearest singularity at least about one panel length away, and a
-// 20-point rule converges to rounding error. Every term is positive: no cancellation.
+// ..., [., pi] with a = 1 - s (the nearest singularity), or a = 1/B when 1 - s < 1e-8/max(1, B)
+// (then the tau < 1 - s region carries a relative weight ~ B^2 (1-s)^2 < 1e-16 and only
+// the 1/B scale remains): each panel sees its nearest singularity about one panel length
+// away or more, and a 28-point rule converges to rounding error for c <= 100 (20 points
+// leave 1e-11 at c = 100, where the integrand falls like r^-(c+1)). Every term is
+// positive: no cancellation.
 // F(1-s)/(c-1) and the integral are continuous at c = 1, so the ratio to F(1) below is
 // defined at c = 1 as well (its limit).
 //
