@@ -3,6 +3,7 @@
 // their _compact variants): the same interpolation as Table::eval (4-point Lagrange, or
 // bilinear for the linear compact tables), with the two axis transforms of the family (c on
 // sqrt(1-c), mu on mu^(1/4)) inlined instead of dispatched, and no span/policy overhead.
+// The stencils are the shared ones of lookup/interpolate.hpp.
 // Out-of-range input is clamped like OutOfDomain::clamp; NaN gives NaN.
 //
 //   const auto& t = tables.table("hfunc.h5", "H_ls0_compact");
@@ -28,8 +29,8 @@ class HFunctionLookup {
         t.storage() != (sizeof(T) == 4 ? Storage::float32 : Storage::float64))
       throw std::invalid_argument("HFunctionLookup: table '" + t.name() +
                                   "' is not a (sqrt(1-c), mu^(1/4)) H-function table of this precision");
-    c_ = AxisParams::from(t.axis(0));
-    mu_ = AxisParams::from(t.axis(1));
+    c_ = interp::AxisMap::from(t.axis(0));
+    mu_ = interp::AxisMap::from(t.axis(1));
     values_.resize(static_cast<std::size_t>(c_.n) * mu_.n);
     int idx[2];
     for (idx[0] = 0; idx[0] < c_.n; ++idx[0])
@@ -40,67 +41,28 @@ class HFunctionLookup {
   double operator()(double c, double mu) const {
     int ic, im;
     double wc[4], wm[4];
-    c = c < c_.x_lo ? c_.x_lo : (c > c_.x_hi ? c_.x_hi : c);
-    mu = mu < mu_.x_lo ? mu_.x_lo : (mu > mu_.x_hi ? mu_.x_hi : mu);
-    if (linear_) {
-      linear_stencil(c_, std::sqrt(1.0 - c), ic, wc);
-      linear_stencil(mu_, std::sqrt(std::sqrt(mu)), im, wm);
-      const T* p = values_.data() + static_cast<std::size_t>(ic) * mu_.n + im;
-      const T* q = p + mu_.n;
-      const double s = wc[0] * (wm[0] * static_cast<double>(p[0]) + wm[1] * static_cast<double>(p[1])) +
-                       wc[1] * (wm[0] * static_cast<double>(q[0]) + wm[1] * static_cast<double>(q[1]));
-      return (c != c || mu != mu) ? std::numeric_limits<double>::quiet_NaN() : s;
-    }
-    stencil(c_, std::sqrt(1.0 - c), ic, wc);
-    stencil(mu_, std::sqrt(std::sqrt(mu)), im, wm);
-    const T* p = values_.data() + static_cast<std::size_t>(ic) * mu_.n + im;
+    const auto to_u_c = [](double x) { return std::sqrt(1.0 - x); };
+    const auto to_u_mu = [](double x) { return std::sqrt(std::sqrt(x)); };
     double s = 0;
-    for (int k = 0; k < 4; ++k) {
-      const T* q = p + static_cast<std::size_t>(k) * mu_.n;
-      double r = 0;
-      for (int l = 0; l < 4; ++l) r += wm[l] * static_cast<double>(q[l]);
-      s += wc[k] * r;
+    if (linear_) {
+      interp::stencil<2>(c_, c, to_u_c, ic, wc);
+      interp::stencil<2>(mu_, mu, to_u_mu, im, wm);
+      const std::size_t strides[2] = {static_cast<std::size_t>(mu_.n), 1};
+      const double w[2][2] = {{wc[0], wc[1]}, {wm[0], wm[1]}};
+      s = interp::accumulate<0, 2, 2, T>(values_.data() + static_cast<std::size_t>(ic) * mu_.n + im, strides, w);
+    } else {
+      interp::stencil<4>(c_, c, to_u_c, ic, wc);
+      interp::stencil<4>(mu_, mu, to_u_mu, im, wm);
+      const std::size_t strides[2] = {static_cast<std::size_t>(mu_.n), 1};
+      const double w[2][4] = {{wc[0], wc[1], wc[2], wc[3]}, {wm[0], wm[1], wm[2], wm[3]}};
+      s = interp::accumulate<0, 2, 4, T>(values_.data() + static_cast<std::size_t>(ic) * mu_.n + im, strides, w);
     }
     return (c != c || mu != mu) ? std::numeric_limits<double>::quiet_NaN() : s;
   }
 
  private:
-  struct AxisParams {
-    double x_lo, x_hi, u0, inv_du, tmax;
-    int n;
-    static AxisParams from(const Axis& a) { return {a.x_lo, a.x_hi, a.u0, a.inv_du, double(a.n - 1), a.n}; }
-  };
-  // As lookup/table.cpp: grid coordinate clamped to [0, n-1], stencil i..i+3 shifted inward
-  // at the ends, Lagrange weights at s = t - i.
-  static void stencil(const AxisParams& a, double u, int& base, double* w) {
-    double t = (u - a.u0) * a.inv_du;
-    t = t > 0 ? t : 0;
-    t = t < a.tmax ? t : a.tmax;
-    int i = static_cast<int>(t) - 1;
-    i = i > 0 ? i : 0;
-    i = i < a.n - 4 ? i : a.n - 4;
-    const double s = t - i;
-    const double s0 = s, s1 = s - 1.0, s2 = s - 2.0, s3 = s - 3.0;
-    base = i;
-    w[0] = -s1 * s2 * s3 * (1.0 / 6.0);
-    w[1] = s0 * s2 * s3 * 0.5;
-    w[2] = -s0 * s1 * s3 * 0.5;
-    w[3] = s0 * s1 * s2 * (1.0 / 6.0);
-  }
-  // As lookup/table.cpp, linear: cell i = floor(t) (at most n-2), hat weights.
-  static void linear_stencil(const AxisParams& a, double u, int& base, double* w) {
-    double t = (u - a.u0) * a.inv_du;
-    t = t > 0 ? t : 0;
-    t = t < a.tmax ? t : a.tmax;
-    int i = static_cast<int>(t);
-    i = i < a.n - 2 ? i : a.n - 2;
-    const double f = t - i;
-    base = i;
-    w[0] = 1.0 - f;
-    w[1] = f;
-  }
   bool linear_ = false;
-  AxisParams c_{}, mu_{};
+  interp::AxisMap c_{}, mu_{};
   std::vector<T> values_;
 };
 

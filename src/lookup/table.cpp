@@ -24,55 +24,17 @@ std::string fmt(double v) {
   return buf;
 }
 
-// Stencil of one axis: first grid index and K weights.
-// Linear (K = 2): hat functions. Cubic (K = 4): Lagrange basis on nodes i..i+3 evaluated at
-// local coordinate s = t - i, exact for cubic polynomials in t. The stencil is shifted
-// inward at the boundary (one-sided), which keeps the exactness.
-// Identity = true skips the transform (all-identity tables take this path).
-template <int K, bool Identity, class Map>
-inline void stencil(const Map& a, double x, int& base, double* w) {
-  // Clamp in x first (a transform may reverse or fold the axis outside its range), keeping
-  // NaN as NaN; the clamp in t below then guards rounding and maps NaN to 0.
-  x = x < a.x_lo ? a.x_lo : x;
-  x = x > a.x_hi ? a.x_hi : x;
-  const double u = Identity ? x : apply_transform(a.transform, x, a.k);
-  double t = (u - a.u0) * a.inv_du;
-  t = t > 0 ? t : 0;  // also maps NaN to 0 (the caller returns NaN for NaN input)
-  t = t < a.tmax ? t : a.tmax;  // outside the range: clamped (the error policy was checked before)
-  if constexpr (K == 2) {
-    int i = static_cast<int>(t);
-    i = i < a.n - 2 ? i : a.n - 2;
-    const double f = t - i;
-    base = i;
-    w[0] = 1.0 - f;
-    w[1] = f;
-  } else {
-    int i = static_cast<int>(t) - 1;
-    i = i > 0 ? i : 0;
-    i = i < a.n - 4 ? i : a.n - 4;
-    const double s = t - i;
-    const double s0 = s, s1 = s - 1.0, s2 = s - 2.0, s3 = s - 3.0;
-    base = i;
-    w[0] = -s1 * s2 * s3 * (1.0 / 6.0);
-    w[1] = s0 * s2 * s3 * 0.5;
-    w[2] = -s0 * s1 * s3 * 0.5;
-    w[3] = s0 * s1 * s2 * (1.0 / 6.0);
-  }
+// Stencil of one axis through its runtime transform (Identity = true skips it: all-identity
+// tables take that path).
+template <int K, bool Identity>
+inline void stencil(const interp::AxisMap& a, double x, int& base, double* w) {
+  if constexpr (Identity)
+    interp::stencil<K>(a, x, [](double v) { return v; }, base, w);
+  else
+    interp::stencil<K>(a, x, [&a](double v) { return apply_transform(a.transform, v, a.k); }, base, w);
 }
 
-// Tensor-product sum over the K^D stencil; the last axis is contiguous.
-template <int d, int D, int K, class T>
-inline double accumulate(const T* p, const std::size_t* strides, const double (*w)[K]) {
-  if constexpr (d == D - 1) {
-    double s = 0;
-    for (int k = 0; k < K; ++k) s += w[d][k] * static_cast<double>(p[k]);
-    return s;
-  } else {
-    double s = 0;
-    for (int k = 0; k < K; ++k) s += w[d][k] * accumulate<d + 1, D, K, T>(p + k * strides[d], strides, w);
-    return s;
-  }
-}
+using interp::accumulate;
 
 }  // namespace
 
@@ -85,7 +47,7 @@ struct KernelImpl {
       return tb.f64_.data();
   }
   template <bool Identity>
-  static inline double point(const Table::AxisMap* maps, const std::size_t* strides, const T* values,
+  static inline double point(const interp::AxisMap* maps, const std::size_t* strides, const T* values,
                              const double* x) {
     int base[D];
     double w[D][K];
@@ -120,7 +82,7 @@ struct KernelImpl {
       const double* p = pts + start * D;
       for (int j = 0; j < m; ++j) off[j] = 0, nan[j] = 0;
       for (int d = 0; d < D; ++d) {
-        const Table::AxisMap a = maps[d];
+        const interp::AxisMap a = maps[d];
         const std::size_t stride = strides[d];
         for (int j = 0; j < m; ++j) {
           const double x = p[j * D + d];
@@ -209,7 +171,7 @@ Table::Table(std::string name, std::vector<Axis> axes, std::span<const double> v
   bool identity = true;
   for (int d = 0; d < rank_; ++d) {
     const Axis& a = axes_[d];
-    maps_[d] = AxisMap{a.x_lo, a.x_hi, a.u0, a.inv_du, a.scale, static_cast<double>(a.n - 1), a.n, a.transform};
+    maps_[d] = interp::AxisMap::from(a);
     identity = identity && a.transform == Transform::identity;
   }
   const bool cubic = interpolation_ == Interpolation::cubic;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "lookup/axis.hpp"
+#include "lookup/interpolate.hpp"
 
 namespace brdftab::lookup {
 
@@ -80,12 +81,7 @@ class Table {
  private:
   using Kernel = double (*)(const Table&, const double* x);
   using BatchKernel = void (*)(const Table&, const double* points, std::size_t n, double* out);
-  // What a query needs of an axis, packed together (the Axis itself holds strings).
-  struct AxisMap {
-    double x_lo, x_hi, u0, inv_du, k, tmax;
-    int n;
-    Transform transform;
-  };
+
   std::string name_;
   std::array<Axis, kMaxRank> axes_{};
   std::array<std::size_t, kMaxRank> strides_{};
@@ -95,7 +91,7 @@ class Table {
   Interpolation interpolation_ = Interpolation::linear;
   std::vector<float> f32_;
   std::vector<double> f64_;
-  std::array<AxisMap, kMaxRank> maps_{};
+  std::array<interp::AxisMap, kMaxRank> maps_{};
   Kernel kernel_ = nullptr;
   BatchKernel batch_kernel_ = nullptr;
 
