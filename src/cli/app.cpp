@@ -1,6 +1,7 @@
 // Command-line parsing (CLI11) for `brdftab`; the work is in cmd_*.cpp.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 
@@ -53,9 +54,11 @@ int run_main(int argc, char** argv) {
   b->add_option("--report", be.report_dir, "also write benchmark JSON into this folder");
   b->allow_extras();
 
-  std::string info_file;
+  std::vector<std::string> info_files;
+  bool info_markdown = false;
   auto* i = app.add_subcommand("info", "describe the tables in an HDF5 file");
-  i->add_option("file", info_file, "table file (.h5)")->required();
+  i->add_option("file", info_files, "table file(s) (.h5)")->required();
+  i->add_flag("--markdown", info_markdown, "one Markdown table row per dataset (accepts several files)");
 
   try {
     app.parse(argc, argv);
@@ -75,7 +78,12 @@ int run_main(int argc, char** argv) {
     be.benchmark_args = b->remaining();
     return run_bench(be, std::cerr);
   }
-  if (i->parsed()) return run_info(info_file, std::cout, std::cerr);
+  if (i->parsed()) {
+    if (info_markdown) return run_info_markdown({info_files.begin(), info_files.end()}, std::cout, std::cerr);
+    int status = 0;
+    for (const auto& f : info_files) status = std::max(status, run_info(f, std::cout, std::cerr));
+    return status;
+  }
   return 1;
 }
 

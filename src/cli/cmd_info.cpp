@@ -1,4 +1,6 @@
 // `brdftab info FILE.h5`: what each dataset holds, how big and how accurate it is.
+#include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <ostream>
 
@@ -46,6 +48,33 @@ int run_info(const std::filesystem::path& file, std::ostream& out, std::ostream&
       for (const auto& [k, v] : info.attributes) {
         if (k == "quantity" || k == "max_abs_error" || k == "max_rel_error" || k == "error_samples") continue;
         out << "    " << k << ": " << show(v) << "\n";
+      }
+    }
+  } catch (const std::exception& e) {
+    err << "brdftab info: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+int run_info_markdown(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err) {
+  out << "| file | dataset | shape | storage | interpolation | size | max abs error | max rel error |\n";
+  out << "|---|---|---|---|---|---|---|---|\n";
+  try {
+    for (const auto& file : files) {
+      for (const auto& name : lookup::list_tables(file)) {
+        const auto loaded = lookup::load_table(file, name);
+        const auto& t = loaded.table;
+        std::string shape;
+        for (int d = 0; d < t.rank(); ++d) shape += (d ? " x " : "") + std::to_string(t.axis(d).n);
+        char row[512];
+        std::snprintf(row, sizeof row, "| %s | %s | %s | %s | %s | %.1f KB | %.1e | %.1e |\n",
+                      file.filename().c_str(), name.c_str(), shape.c_str(),
+                      std::string(lookup::storage_name(t.storage())).c_str(),
+                      std::string(lookup::interpolation_name(t.interpolation())).c_str(), t.bytes() / 1024.0,
+                      loaded.info.attribute_number("max_abs_error", NAN),
+                      loaded.info.attribute_number("max_rel_error", NAN));
+        out << row;
       }
     }
   } catch (const std::exception& e) {

@@ -28,6 +28,9 @@ struct EvalOptions {
 int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ostream& err);
 
 int run_info(const std::filesystem::path& file, std::ostream& out, std::ostream& err);
+// One Markdown table row per dataset of the files (file, dataset, shape, storage,
+// interpolation, size, measured errors), as in the README's accuracy table.
+int run_info_markdown(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err);
 
 struct ValidateOptions {
   std::filesystem::path tables_dir;
