@@ -11,34 +11,15 @@
 #include <sstream>
 #include <string>
 
+#include "cli_runner.hpp"
 #include "generators/demo_family.hpp"
 
 namespace fs = std::filesystem;
 
+using brdftab::testing::run_cli;
+
+
 namespace {
-
-struct Result {
-  int status;
-  std::string out, err;
-};
-
-// Runs `brdftab <args>` with `input` on stdin.
-Result run_cli(const std::string& args, const std::string& input = "") {
-  // Own scratch folder per process: CTest runs test cases in parallel.
-  const fs::path dir = fs::path(BRDFTAB_TEST_TMP) / ("cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::ofstream(dir / "in.csv") << input;
-  const std::string cmd = std::string("'") + BRDFTAB_EXE + "' " + args + " < '" + (dir / "in.csv").string() +
-                          "' > '" + (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'";
-  const int raw = std::system(cmd.c_str());
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  };
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out.txt"), slurp(dir / "err.txt")};
-}
 
 fs::path demo_tables() {
   static const fs::path dir = [] {

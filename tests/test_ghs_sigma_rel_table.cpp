@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli_runner.hpp"
 #include "generators/family.hpp"
 #include "generators/ghs_sigma_rel.hpp"
 #include "generators/manifest.hpp"
@@ -23,27 +24,10 @@
 namespace fs = std::filesystem;
 using namespace brdftab;
 
+using brdftab::testing::run_cli;
+using brdftab::testing::contains;
+
 namespace {
-struct Result {
-  int status;
-  std::string out, err;
-};
-Result run_brdftab(const std::string& args, const std::string& input) {
-  const fs::path dir = fs::path(BRDFTAB_TEST_TMP) / ("ghs_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::ofstream(dir / "in.csv") << input;
-  const std::string cmd = std::string("'") + BRDFTAB_EXE + "' " + args + " < '" + (dir / "in.csv").string() +
-                          "' > '" + (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'";
-  const int raw = std::system(cmd.c_str());
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  };
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out.txt"), slurp(dir / "err.txt")};
-}
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 std::string manifest_error(const nlohmann::json& entry) {
   try {
     gen::find_family("ghs_sigma_rel")->check_entry(entry);
@@ -137,7 +121,7 @@ TEST_CASE("ghs_sigma_rel table: manifest checking names the key") {
 
 TEST_CASE("eval ghs_sigma_rel2: exact and table, bad input exits 2 naming row, column, value and domain") {
   const std::string tables = (fs::path(BRDFTAB_SOURCE_DIR) / "tables").string();
-  const auto exact = run_brdftab("eval ghs_sigma_rel2 --method exact", "B,c,s\n2,3,0.25\n");
+  const auto exact = run_cli("eval ghs_sigma_rel2 --method exact", "B,c,s\n2,3,0.25\n");
   REQUIRE(exact.status == 0);
   std::istringstream lines(exact.out);
   std::string header, row;
@@ -150,7 +134,7 @@ TEST_CASE("eval ghs_sigma_rel2: exact and table, bad input exits 2 naming row, c
   // c = 3 closed form (see test_ghs_sigma_rel_numerics.cpp): sin^2((atan(B(1+s)) + atan(B(1-s)))/2).
   CHECK(std::abs(v / std::pow(std::sin((std::atan(2.5) + std::atan(1.5)) / 2), 2) - 1) <= 1e-13);
 
-  const auto table = run_brdftab("eval ghs_sigma_rel2 --method table --tables '" + tables + "'", "B,c,s\n2,3,0.25\n");
+  const auto table = run_cli("eval ghs_sigma_rel2 --method table --tables '" + tables + "'", "B,c,s\n2,3,0.25\n");
   REQUIRE(table.status == 0);
   std::istringstream tl(table.out);
   std::getline(tl, header);
@@ -166,12 +150,12 @@ TEST_CASE("eval ghs_sigma_rel2: exact and table, bad input exits 2 naming row, c
   for (Bad b : {Bad{"B,c,s\n1,2,0.5\n1,1,0.5\n", "row 2"}, Bad{"B,c,s\n0,2,0.5\n", "'B'"},
                 Bad{"B,c,s\n1,2,1.5\n", "[0, 1]"}, Bad{"B,c,s\n1,nan,0.5\n", "'c'"}, Bad{"B,c\n1,2\n", "'s'"},
                 Bad{"B,c,s\n-1,2,0.5\n", "[1e-100, 1e100]"}}) {
-    const auto r = run_brdftab("eval ghs_sigma_rel2", b.input);
+    const auto r = run_cli("eval ghs_sigma_rel2", b.input);
     INFO("input " << b.input << " -> " << r.err);
     CHECK(r.status == 2);
     CHECK(contains(r.err, b.expect));
   }
-  const auto out_of_table = run_brdftab("eval ghs_sigma_rel2 --method table --tables '" + tables + "'", "B,c,s\n1,30,0.5\n");
+  const auto out_of_table = run_cli("eval ghs_sigma_rel2 --method table --tables '" + tables + "'", "B,c,s\n1,30,0.5\n");
   CHECK(out_of_table.status == 2);
   CHECK(contains(out_of_table.err, "c = 30"));
 }

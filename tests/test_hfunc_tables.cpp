@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli_runner.hpp"
 #include "generators/family.hpp"
 #include "generators/hfunc.hpp"
 #include "generators/manifest.hpp"
@@ -24,28 +25,11 @@ namespace fs = std::filesystem;
 using namespace brdftab;
 using numerics::HKind;
 
+using brdftab::testing::run_cli;
+using brdftab::testing::contains;
+
 namespace {
 
-struct Result {
-  int status;
-  std::string out, err;
-};
-
-Result run_cli(const std::string& args, const std::string& input) {
-  const fs::path dir = fs::path(BRDFTAB_TEST_TMP) / ("hfunc_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::ofstream(dir / "in.csv") << input;
-  const std::string cmd = std::string("'") + BRDFTAB_EXE + "' " + args + " < '" + (dir / "in.csv").string() +
-                          "' > '" + (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'";
-  const int raw = std::system(cmd.c_str());
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  };
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out.txt"), slurp(dir / "err.txt")};
-}
 
 // Max relative error of a table against method 2 (Newton on Eq. 20) at random off-grid points.
 double error_against_method2(const lookup::Table& t, HKind kind, unsigned seed) {

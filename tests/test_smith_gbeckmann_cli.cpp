@@ -9,37 +9,21 @@
 #include <sstream>
 #include <string>
 
+#include "cli_runner.hpp"
 #include "numerics/smith_gbeckmann_lambda.hpp"
 
 namespace fs = std::filesystem;
 namespace numerics = brdftab::numerics;
 
+using brdftab::testing::run_cli;
+using brdftab::testing::contains;
+
 namespace {
-struct Result {
-  int status;
-  std::string out, err;
-};
-Result run_brdftab(const std::string& args, const std::string& input) {
-  const fs::path dir = fs::path(BRDFTAB_TEST_TMP) / ("smith_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::ofstream(dir / "in.csv") << input;
-  const std::string cmd = std::string("'") + BRDFTAB_EXE + "' " + args + " < '" + (dir / "in.csv").string() +
-                          "' > '" + (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'";
-  const int raw = std::system(cmd.c_str());
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  };
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out.txt"), slurp(dir / "err.txt")};
-}
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 }  // namespace
 
 TEST_CASE("eval smith_gb: exact and table agree with the numerics") {
   const std::string tables = (fs::path(BRDFTAB_SOURCE_DIR) / "tables").string();
-  const auto exact = run_brdftab("eval smith_gb --method exact", "p,a\n1.5,0.7\n4,inf\n");
+  const auto exact = run_cli("eval smith_gb --method exact", "p,a\n1.5,0.7\n4,inf\n");
   REQUIRE(exact.status == 0);
   CHECK(contains(exact.out, "p,a,Lambda,G1"));
   // Parse the first data row: Lambda and G1 printed with 17 digits.
@@ -54,7 +38,7 @@ TEST_CASE("eval smith_gb: exact and table agree with the numerics") {
   CHECK(g1 == numerics::smith_gbeckmann_g1(0.7, 1.5));
   CHECK(contains(exact.out, "4,inf,inf,0"));
 
-  const auto table = run_brdftab("eval smith_gb --method table --tables '" + tables + "'", "p,a\n1.5,0.7\n");
+  const auto table = run_cli("eval smith_gb --method table --tables '" + tables + "'", "p,a\n1.5,0.7\n");
   REQUIRE(table.status == 0);
   std::istringstream tl(table.out);
   std::getline(tl, header);
@@ -64,26 +48,26 @@ TEST_CASE("eval smith_gb: exact and table agree with the numerics") {
 }
 
 TEST_CASE("eval smith_gb: bad input exits 2 naming row, column, value and domain") {
-  const auto zero_p = run_brdftab("eval smith_gb", "p,a\n1,0.5\n0,3\n");
+  const auto zero_p = run_cli("eval smith_gb", "p,a\n1,0.5\n0,3\n");
   CHECK(zero_p.status == 2);
   CHECK(contains(zero_p.err, "row 2"));
   CHECK(contains(zero_p.err, "'p'"));
   CHECK(contains(zero_p.err, "'0'"));
   CHECK(contains(zero_p.err, "[0.1, 10]"));
   CHECK(zero_p.out.empty());
-  const auto negative_a = run_brdftab("eval smith_gb", "p,a\n1,-0.5\n");
+  const auto negative_a = run_cli("eval smith_gb", "p,a\n1,-0.5\n");
   CHECK(negative_a.status == 2);
   CHECK(contains(negative_a.err, "'a'"));
   CHECK(contains(negative_a.err, "-0.5"));
   CHECK(contains(negative_a.err, "[0, inf]"));
-  const auto nan_a = run_brdftab("eval smith_gb", "p,a\n1,nan\n");
+  const auto nan_a = run_cli("eval smith_gb", "p,a\n1,nan\n");
   CHECK(nan_a.status == 2);
   CHECK(contains(nan_a.err, "'a'"));
-  const auto missing = run_brdftab("eval smith_gb", "p\n1\n");
+  const auto missing = run_cli("eval smith_gb", "p\n1\n");
   CHECK(missing.status == 2);
   CHECK(contains(missing.err, "missing column 'a'"));
   const std::string tables = (fs::path(BRDFTAB_SOURCE_DIR) / "tables").string();
-  const auto outside_table = run_brdftab("eval smith_gb --method table --tables '" + tables + "'", "p,a\n8,1\n");
+  const auto outside_table = run_cli("eval smith_gb --method table --tables '" + tables + "'", "p,a\n8,1\n");
   CHECK(outside_table.status == 2);
   CHECK(contains(outside_table.err, "[0.25, 4]"));
 }

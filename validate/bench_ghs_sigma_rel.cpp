@@ -41,11 +41,6 @@ std::shared_ptr<Points> make_points(std::size_t n) {
   return p;
 }
 
-void per_call(benchmark::State& state, std::size_t calls) {
-  state.counters["ns_per_call"] = benchmark::Counter(
-      static_cast<double>(calls), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-}
-
 }  // namespace
 
 void register_ghs_sigma_rel_benchmarks(const BenchContext& ctx) {
@@ -122,30 +117,12 @@ void register_ghs_sigma_rel_benchmarks(const BenchContext& ctx) {
                                  });
   }
 
-  auto generate = [](const nlohmann::json& entry) {
-    return [entry](benchmark::State& state) {
-      const auto dir = std::filesystem::temp_directory_path() / "brdftab_bench_ghs_sigma_rel";
-      std::filesystem::create_directories(dir);
-      const gen::Family* family = gen::find_family("ghs_sigma_rel");
-      gen::GenerateContext gctx;
-      gctx.out_dir = dir;
-      std::size_t bytes = 0;
-      for (auto _ : state) {
-        bytes = 0;
-        for (const auto& s : family->generate(entry, gctx)) bytes += s.bytes;
-      }
-      state.counters["table_bytes"] = static_cast<double>(bytes);
-      std::filesystem::remove_all(dir);
-    };
-  };
-  benchmark::RegisterBenchmark("ghs_sigma_rel/generate/default_grid",
-                               generate(gen::find_family("ghs_sigma_rel")->default_entry()))
-      ->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+  register_generation_benchmark("ghs_sigma_rel/generate/default_grid", "ghs_sigma_rel",
+                                gen::find_family("ghs_sigma_rel")->default_entry());
   nlohmann::json materials = nlohmann::json::array();
   for (int i = 0; i < 8; ++i)
     materials.push_back({{"name", "m" + std::to_string(i)}, {"B", 0.05 * std::pow(3.0, i)}, {"c", 1.1 + i}});
-  benchmark::RegisterBenchmark("ghs_sigma_rel/generate/8_materials", generate({{"materials", materials}}))
-      ->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+  register_generation_benchmark("ghs_sigma_rel/generate/8_materials", "ghs_sigma_rel", {{"materials", materials}});
 }
 
 }  // namespace brdftab::validate

@@ -44,11 +44,6 @@ std::shared_ptr<Points> make_points(std::size_t n) {
   return p;
 }
 
-void per_call(benchmark::State& state, std::size_t calls) {
-  state.counters["ns_per_call"] = benchmark::Counter(
-      static_cast<double>(calls), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-}
-
 }  // namespace
 
 void register_hfunc_benchmarks(const BenchContext& ctx) {
@@ -112,8 +107,7 @@ void register_hfunc_benchmarks(const BenchContext& ctx) {
           state.counters["table_bytes"] = static_cast<double>(t.bytes());
         });
         // The family's inlined lookup (lookup/hfunc_lookup.hpp), same interpolation.
-        if (compact) {
-          auto f = std::make_shared<lookup::HFunctionLookup<float>>(table->table);
+        auto register_inlined = [&](auto f) {
           benchmark::RegisterBenchmark(("hfunc/table_inlined/" + ds).c_str(), [pts, f, is0](benchmark::State& state) {
             for (auto _ : state)
               for (std::size_t i = 0; i < pts->c.size(); ++i) benchmark::DoNotOptimize((*f)(pts->c[i], pts->mu[i]));
@@ -123,18 +117,11 @@ void register_hfunc_benchmarks(const BenchContext& ctx) {
             per_call(state, pts->c.size());
             state.counters["max_rel_err"] = e;
           });
-        } else {
-          auto f = std::make_shared<lookup::HFunctionLookup<double>>(table->table);
-          benchmark::RegisterBenchmark(("hfunc/table_inlined/" + ds).c_str(), [pts, f, is0](benchmark::State& state) {
-            for (auto _ : state)
-              for (std::size_t i = 0; i < pts->c.size(); ++i) benchmark::DoNotOptimize((*f)(pts->c[i], pts->mu[i]));
-            double e = 0;
-            for (std::size_t i = 0; i < pts->c.size(); ++i)
-              e = std::max(e, std::abs((*f)(pts->c[i], pts->mu[i]) / (is0 ? pts->h0[i] : pts->h1[i]) - 1));
-            per_call(state, pts->c.size());
-            state.counters["max_rel_err"] = e;
-          });
-        }
+        };
+        if (compact)
+          register_inlined(std::make_shared<lookup::HFunctionLookup<float>>(table->table));
+        else
+          register_inlined(std::make_shared<lookup::HFunctionLookup<double>>(table->table));
         benchmark::RegisterBenchmark(("hfunc/table_batch/" + ds).c_str(), [pts, table](benchmark::State& state) {
           const lookup::Table& t = table->table;
           std::vector<double> xy(2 * pts->c.size()), out(pts->c.size());
@@ -148,15 +135,7 @@ void register_hfunc_benchmarks(const BenchContext& ctx) {
       }
   }
 
-  benchmark::RegisterBenchmark("hfunc/generate/default_tables", [](benchmark::State& state) {
-    const auto dir = std::filesystem::temp_directory_path() / "brdftab_bench_hfunc";
-    std::filesystem::create_directories(dir);
-    const gen::Family* family = gen::find_family("hfunc");
-    gen::GenerateContext gctx;
-    gctx.out_dir = dir;
-    for (auto _ : state) benchmark::DoNotOptimize(family->generate(family->default_entry(), gctx));
-    std::filesystem::remove_all(dir);
-  })->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+  register_generation_benchmark("hfunc/generate/default_tables", "hfunc", gen::find_family("hfunc")->default_entry());
 }
 
 }  // namespace brdftab::validate

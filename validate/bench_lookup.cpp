@@ -61,9 +61,7 @@ std::shared_ptr<Fixture> make_fixture(int rank, lookup::Interpolation interp, lo
 }
 
 void finish(benchmark::State& state, const Fixture& fx) {
-  state.counters["ns_per_lookup"] =
-      benchmark::Counter(static_cast<double>(kPoints), benchmark::Counter::kIsIterationInvariantRate |
-                                                           benchmark::Counter::kInvert);
+  per_call(state, kPoints);
   state.counters["max_abs_err"] = fx.max_abs_error;
   state.counters["table_bytes"] = static_cast<double>(fx.table.bytes());
 }

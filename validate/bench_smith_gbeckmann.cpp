@@ -45,11 +45,6 @@ std::shared_ptr<Points> make_points(std::size_t n) {
   return pts;
 }
 
-void per_call(benchmark::State& state, std::size_t calls) {
-  state.counters["ns_per_call"] = benchmark::Counter(
-      static_cast<double>(calls), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-}
-
 }  // namespace
 
 void register_smith_gbeckmann_benchmarks(const BenchContext& ctx) {
@@ -107,15 +102,7 @@ void register_smith_gbeckmann_benchmarks(const BenchContext& ctx) {
     }
   }
 
-  benchmark::RegisterBenchmark("smith_gb/generate/default_tables", [](benchmark::State& state) {
-    const auto dir = std::filesystem::temp_directory_path() / "brdftab_bench_smith_gbeckmann";
-    std::filesystem::create_directories(dir);
-    const gen::Family* family = gen::find_family("smith_gbeckmann");
-    gen::GenerateContext gctx;
-    gctx.out_dir = dir;
-    for (auto _ : state) benchmark::DoNotOptimize(family->generate(family->default_entry(), gctx));
-    std::filesystem::remove_all(dir);
-  })->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+  register_generation_benchmark("smith_gb/generate/default_tables", "smith_gbeckmann", gen::find_family("smith_gbeckmann")->default_entry());
 }
 
 }  // namespace brdftab::validate

@@ -14,13 +14,13 @@
 #include <string>
 #include <vector>
 
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "generators/hfunc.hpp"
 #include "lookup/table.hpp"
 #include "lookup/table_file.hpp"
 #include "lookup/table_set.hpp"
 #include "numerics/domain_check.hpp"
+#include "numerics/hfunction_k_reference.hpp"
 #include "numerics/hfunction_fit.hpp"
 #include "numerics/hfunction_fok.hpp"
 #include "numerics/hfunction_nystrom.hpp"
@@ -97,23 +97,6 @@ void exact_section(ReportContext& ctx) {
   md << "(relative difference, Richardson extrapolation from mu = 1e7, 1e8).\n\n";
 }
 
-// K(t) by its definition (d'Eon Eq. 23): K(0) + 2 int_0^1 Psi x^2 t^2 / (1 + x^2 t^2) dx,
-// adaptive Gauss-Kronrod in long double on panels [0, 1/t], [1/t, 4/t], ...
-long double k_reference(const numerics::HCharacteristic& ch, long double t) {
-  auto f = [&](long double x) {
-    const long double x2 = x * x, y = x2 * t * t;
-    return (ch.p[0] + x2 * (ch.p[1] + x2 * ch.p[2])) * y / (1 + y);
-  };
-  using GK = boost::math::quadrature::gauss_kronrod<long double, 31>;
-  long double sum = 0, a = 0, b = t > 1 ? 1 / t : 1.0L;
-  while (true) {
-    sum += GK::integrate(f, a, b, 6, 1e-18L);
-    if (b >= 1) break;
-    a = b;
-    b = std::min(1.0L, 4 * b);
-  }
-  return static_cast<long double>(ch.k_at_zero) + 2 * sum;
-}
 
 void k_section(ReportContext& ctx) {
   auto& md = *ctx.markdown;
@@ -129,7 +112,7 @@ void k_section(ReportContext& ctx) {
       double worst = 0, worst_closed = 0, at_small = 0;
       for (int i = -80; i <= 80; ++i) {
         const double t = std::pow(10.0, i / 8.0);
-        const long double ref = k_reference(ch, t);
+        const long double ref = numerics::k_by_definition(ch, t);
         const double e = static_cast<double>(std::abs((numerics::k_function(ch, t) - ref) / ref));
         const double ec = static_cast<double>(std::abs((numerics::k_closed_form(ch, t) - ref) / ref));
         worst = std::max(worst, e);

@@ -1,0 +1,40 @@
+#pragma once
+// Runs the real `brdftab` executable for CLI tests: arguments, stdin text in; exit status,
+// stdout and stderr out. Each test process gets its own scratch folder (CTest runs test
+// cases in parallel).
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace brdftab::testing {
+
+struct CliResult {
+  int status;
+  std::string out, err;
+};
+
+inline CliResult run_cli(const std::string& args, const std::string& input = "") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(BRDFTAB_TEST_TMP) / ("cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "in.csv") << input;
+  const std::string cmd = std::string("'") + BRDFTAB_EXE + "' " + args + " < '" + (dir / "in.csv").string() +
+                          "' > '" + (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'";
+  const int raw = std::system(cmd.c_str());
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out.txt"), slurp(dir / "err.txt")};
+}
+
+inline bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace brdftab::testing
