@@ -29,7 +29,7 @@ std::string fmt(double v) {
 template <int K, bool Identity>
 inline void stencil(const interp::AxisMap& a, double x, int& base, double* w) {
   if constexpr (Identity)
-    interp::stencil<K>(a, x, [](double v) { return v; }, base, w);
+    interp::stencil_u<K>(a, x, base, w);  // monotone and defined everywhere: the clamp in t suffices
   else
     interp::stencil<K>(a, x, [&a](double v) { return apply_transform(a.transform, v, a.k); }, base, w);
 }
@@ -70,6 +70,13 @@ struct KernelImpl {
   // compiler vectorizes; pass 2 gathers the values and sums.
   template <bool Identity>
   static void batch(const Table& tb, const double* pts, std::size_t n, double* out) {
+    if constexpr (K == 2 && D <= 2) {  // short stencils: the one-pass loop is faster (measured)
+      const auto maps = tb.maps_;
+      const auto strides = tb.strides_;
+      const T* values = data(tb);
+      for (std::size_t i = 0; i < n; ++i) out[i] = point<Identity>(maps.data(), strides.data(), values, pts + i * D);
+      return;
+    }
     constexpr int C = 64;
     const auto maps = tb.maps_;
     const auto strides = tb.strides_;
