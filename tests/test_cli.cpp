@@ -105,6 +105,11 @@ TEST_CASE("eval: bad rows exit 2 naming the row, the column, the value and the d
   r = run_cli("eval demo_exp_cos", "x,y\n\n0.5,0.1\n\n0.5,abc\n");
   CHECK(r.status == 2);
   CHECK(r.err.find("row 2 (line 5), column 'y'") != std::string::npos);  // blank lines count as lines
+  r = run_cli("eval demo_exp_cos", "x,y\n1e999,0.1\n");  // overflows a double: not silently inf
+  CHECK(r.status == 2);
+  CHECK(r.err.find("column 'x': value '1e999' is not a number") != std::string::npos);
+  r = run_cli("eval demo_exp_cos", "x,y\n1e-400,0.1\n");  // underflows to 0
+  CHECK(r.status == 2);
   r = run_cli("eval demo_exp_cos", "x,y,x\n0.5,0.1,0.7\n");
   CHECK(r.status == 2);
   CHECK(r.err.find("column 'x' appears twice") != std::string::npos);

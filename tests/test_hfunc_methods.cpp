@@ -27,7 +27,7 @@ TEST_CASE("hfunc: methods 1 and 2 agree to 1e-12 on a grid with the hard corners
       const FokHRow fok(kind, c);
       const NystromHSolver nystrom(kind, c);
       std::vector<double> mus(std::begin(kHardMu), std::end(kHardMu));
-      if (kind == HKind::ls0) mus.insert(mus.end(), {2.0, 10.0, 1e3, 1e6});  // mode 0 also for mu > 1
+      mus.insert(mus.end(), {2.0, 10.0, 1e3, 1e6, 1e12, 1e20});  // mu > 1 up to the exact method's limit
       for (double mu : mus) {
         const double h1 = fok(mu), h2 = nystrom(mu);
         REQUIRE(std::isfinite(h1));
@@ -161,6 +161,12 @@ TEST_CASE("hfunc: H rejects NaN and negative mu") {
   const FokHRow fok(HKind::ls2, 0.5);
   CHECK_THROWS_AS(fok(-1e-300), std::domain_error);
   CHECK_THROWS_AS(fok(NAN), std::domain_error);
+  // Beyond 1e20 the node range no longer holds the kernel (the results went wrong and then
+  // NaN): refused, while mu = inf is the analytic limit.
+  CHECK_THROWS_WITH_AS(fok(1e25), "mu = 1.0000000000000001e+25 is outside the valid domain [0, 1e20] or +inf",
+                       std::domain_error);
+  CHECK_THROWS_AS(fok(1e300), std::domain_error);
+  CHECK(std::isfinite(fok(INFINITY)));
   CHECK_THROWS_AS(h_function(HKind::ls0, 1.5, 0.5), std::domain_error);
   CHECK_THROWS_AS(NystromHSolver(HKind::ls0, 0.5)(-0.5), std::domain_error);
 }

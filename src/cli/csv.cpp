@@ -1,6 +1,7 @@
 #include "cli/csv.hpp"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -32,6 +33,9 @@ std::optional<double> parse_number(const std::string& cell) {
   errno = 0;
   const double v = std::strtod(cell.c_str(), &end);
   if (end != cell.c_str() + cell.size()) return std::nullopt;
+  // Overflow (1e999 -> inf) or underflow to zero (1e-400 -> 0) would change the value
+  // silently; a literal inf or a subnormal is fine.
+  if (errno == ERANGE && (std::isinf(v) || v == 0)) return std::nullopt;
   return v;  // may be NaN or +-inf; the domain check decides
 }
 

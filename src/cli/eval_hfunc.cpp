@@ -1,6 +1,6 @@
 // `brdftab eval h_iso` (columns c, mu -> H) and `brdftab eval h_ls` (columns mode, c, mu -> H):
 // Chandrasekhar H-functions, isotropic and Lambertian-sphere pseudo-problems (d'Eon 3.1).
-//   exact: Fok integral (numerics/hfunction_fok.hpp), mu in [0, inf] (mu = inf allowed).
+//   exact: Fok integral (numerics/hfunction_fok.hpp), mu in [0, 1e20] or mu = inf.
 //   table: tables/hfunc.h5 (precise datasets H_iso, H_ls0, H_ls1, H_ls2), mu within the
 //          table's range (default [0, 1]).
 //   fit:   d'Eon Eq. 37 (mode 0) and Eq. 28-30 (mode 1, corrected, validate/ERRATA.md);
@@ -39,7 +39,8 @@ double table_h(HKind kind, double c, double mu, const EvalContext& ctx) {
 HKind ls_kind(double mode) { return mode == 0 ? HKind::ls0 : mode == 1 ? HKind::ls1 : HKind::ls2; }
 
 Parameter c_parameter() { return {"c", 0.0, 1.0, false, false, false, "[0, 1]"}; }
-Parameter mu_parameter() { return {"mu", 0.0, INFINITY, false, false, false, "[0, inf]"}; }
+// mu in (1e20, inf) passes this check and is refused by the exact method with its own message.
+Parameter mu_parameter() { return {"mu", 0.0, INFINITY, false, false, false, "[0, 1e20] or inf"}; }
 
 }  // namespace
 

@@ -53,7 +53,8 @@ FokHRow::FokHRow(const HCharacteristic& ch, const FokOptions& options)
 }
 
 double FokHRow::log_h(double mu) const {
-  if (std::isnan(mu) || mu < 0.0) throw_domain_error("mu", mu, "[0, +inf]");
+  if (std::isnan(mu) || mu < 0.0 || (mu > kFokMaxMu && !std::isinf(mu)))
+    throw_domain_error("mu", mu, "[0, 1e20] or +inf");
   if (mu == 0.0) return 0.0;
   if (std::isinf(mu)) return ch_.k_at_zero > 0.0 ? -0.5 * std::log(ch_.k_at_zero)
                                                   : std::numeric_limits<double>::infinity();
@@ -100,7 +101,8 @@ std::array<double, 4> h_moments(HKind kind, double c) { return h_moments(FokHRow
 
 double h_function(HKind kind, double c, double mu) {
   require_closed("c", c, 0.0, 1.0, "[0, 1]");
-  if (std::isnan(mu) || mu < 0.0) throw_domain_error("mu", mu, "[0, +inf]");
+  if (std::isnan(mu) || mu < 0.0 || (mu > kFokMaxMu && !std::isinf(mu)))
+    throw_domain_error("mu", mu, "[0, 1e20] or +inf");
   return FokHRow(kind, c)(mu);
 }
 

@@ -19,6 +19,9 @@
 
 namespace brdftab::numerics {
 
+// Largest finite mu the node range [s_min, s_max] resolves (see FokHRow::operator()).
+inline constexpr double kFokMaxMu = 1e20;
+
 struct FokOptions {
   double step = 0.2;      // trapezoidal step h in s = log t
   double s_min = -80.0;   // node range in s
@@ -32,9 +35,10 @@ class FokHRow {
   explicit FokHRow(HKind kind, double c, const FokOptions& options = {})
       : FokHRow(make_characteristic(kind, c), options) {}
 
-  // H(mu) for mu >= 0 (mu = +inf gives K(0)^(-1/2), +inf at c = 1 for iso and ls0).
-  // Accurate to ~1e-15 relative for mu in [0, 1e10]. Throws std::domain_error for NaN
-  // or mu < 0.
+  // H(mu) for mu in [0, kFokMaxMu] or mu = +inf (K(0)^(-1/2), +inf at c = 1 for iso and
+  // ls0). Accurate to ~1e-15 relative for mu in [0, 1e10], 1e-13 up to kFokMaxMu. Beyond
+  // that the kernel's centre s = -log mu leaves the node range: throws std::domain_error
+  // for mu in (kFokMaxMu, inf), NaN or mu < 0.
   double operator()(double mu) const;
   // log H(mu), same domain.
   double log_h(double mu) const;
