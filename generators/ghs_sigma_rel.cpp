@@ -39,7 +39,7 @@ constexpr const char* kSource =
 constexpr const char* kMethod =
     "sigma_rel^2 = F(1-s) + (c-1) B^2 s/pi Integral_0^pi atan2(sin t, s - cos t) sin t (1 + B^2 r(t)^2)^(-(c+1)/2) dt, "
     "r^2 = (1-s)^2 + 4 s sin^2(t/2) (Eq. 25 reduced to one integral over circles centred on the origin, arc Eq. 62); "
-    "28-point Gauss-Legendre on panels [0,a],[a,2a],[2a,4a],...,pi, a = min scale of 1-s and 1/B; "
+    "28-point Gauss-Legendre on panels [0,a],[a,2a],[2a,4a],...,pi, a = 1-s (a = 1/B once 1-s < 1e-8/max(1,B)); "
     "agrees with the polar form (long double) to ~1e-15";
 constexpr double kBDomainLo = 1e-8, kBDomainHi = 1e8;  // manifest limits on B
 

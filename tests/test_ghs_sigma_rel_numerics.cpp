@@ -51,7 +51,40 @@ double disk_cubature(double B, double c, double s) {
     if (b > a) total += gauss_kronrod<double, 61>::integrate(inner, a, b, 10, 1e-11);
   return total;
 }
+// Brute force in polar coordinates about the origin, sharing nothing with the code under
+// test (no closed-form F, no expm1/log1p, S written out from its definition):
+//   sigma_rel^2 = 2 int_0^pi dphi int_0^rho(phi) S(r) r dr,  rho = s cos phi + sqrt(1 - s^2 sin^2 phi),
+// the radial integral by a 61-point Kronrod rule on each of the panels [0, 1/B], [1/B, 2/B],
+// [2/B, 4/B], ... (S falls off on the scale 1/B), the angle by adaptive Gauss-Kronrod
+// (tolerance 1e-13) split at pi/2, where rho has a kink at s = 1.
+double polar_brute_force(double B, double c, double s) {
+  using boost::math::quadrature::gauss_kronrod;
+  const double norm = (c - 1) / (2 * kPi) * B * B;
+  auto S_r = [&](double r) { return norm * std::pow(1 + B * B * r * r, -(c + 1) / 2) * r; };
+  auto radial = [&](double phi) {
+    const double rho = s * std::cos(phi) + std::sqrt(std::max(0.0, 1 - s * s * std::sin(phi) * std::sin(phi)));
+    double sum = 0, lo = 0, hi = std::min(rho, 1 / B);
+    while (lo < rho) {
+      sum += gauss_kronrod<double, 61>::integrate(S_r, lo, hi, 0);
+      lo = hi;
+      hi = std::min(rho, 2 * hi);
+    }
+    return sum;
+  };
+  return 2 * (gauss_kronrod<double, 61>::integrate(radial, 0.0, kPi / 2, 12, 1e-13) +
+              gauss_kronrod<double, 61>::integrate(radial, kPi / 2, kPi, 12, 1e-13));
+}
 }  // namespace
+
+TEST_CASE("ghs_sigma_rel: 1e-12 at the domain's corners against an independent polar brute force") {
+  // c - 1 down to 1e-9, B at both ends of [1e-2, 1e3], s = 0, near 1 and exactly 1.
+  for (double B : {1e-2, 1.0, 1e3})
+    for (double c : {1 + 1e-9, 2.0, 10.0})
+      for (double s : {0.0, 0.7, 0.999, 1.0}) {
+        INFO("B = " << B << ", c = " << c << ", s = " << s);
+        CHECK(rel_diff(ghs_sigma_rel2(B, c, s), polar_brute_force(B, c, s)) <= 1e-12);
+      }
+}
 
 TEST_CASE("ghs_sigma_rel: Gauss-Legendre rules integrate polynomials of degree 2n-1 exactly") {
   for (int n : {1, 2, 3, 7, 20, 28, 64}) {

@@ -95,8 +95,8 @@ class GhsSigmaRelFixedBs {
 };
 
 // The table-free run-time alternative: (2) with one n-point Gauss-Legendre rule on a
-// graded variable tau = a (exp(t) - 1), t in [0, log1p(pi / a)], a = max(1 - s, 1/B)
-// clipped to [1e-6, pi] (graded = true), or on tau in [0, pi] directly (graded = false).
+// graded variable tau = a (exp(t) - 1), t in [0, log1p(pi / a)], a = max(1 - s, 0.01/B)
+// clipped to [1e-9, pi] (graded = true), or on tau in [0, pi] directly (graded = false).
 // Unchecked (n >= 1). Its error against n is measured in the report and the benchmark.
 class GhsSigmaRelGaussRule {
  public:
