@@ -239,3 +239,30 @@ TEST_CASE("empty tables and degenerate axes are errors, not undefined behaviour"
   CHECK_THROWS_AS(empty.eval({&x, 1}), std::logic_error);
   CHECK_THROWS_AS(make_axis("tiny", Transform::identity, 0.0, 1e-310, 3), std::invalid_argument);
 }
+
+TEST_CASE("2-D bilinear batches (AVX2 path where available) equal scalar queries bit for bit") {
+  const std::vector<Axis> axes = {make_axis("x", Transform::identity, -1.0, 2.0, 37),
+                                  make_axis("y", Transform::identity, 0.0, 1.0, 53)};
+  auto f = [](const double* x) { return std::sin(3 * x[0]) * std::exp(x[1]) + 0.1; };
+  for (auto st : {Storage::float32, Storage::float64}) {
+    const Table t = make_table(axes, f, st, Interpolation::linear);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> uni(-1.5, 2.5);  // includes out-of-range points
+    for (std::size_t n : {1u, 3u, 4u, 5u, 8u, 63u, 1000u}) {
+      std::vector<double> pts(2 * n);
+      for (auto& p : pts) p = uni(rng);
+      if (n >= 5) pts[3] = NAN, pts[8] = INFINITY, pts[9] = -INFINITY;
+      for (std::size_t i = 0; i + 1 < pts.size(); i += 7) pts[i] = axes[0].value(static_cast<int>(i % 37));  // grid points
+      std::vector<double> batch(n);
+      t.eval_batch(pts, batch);
+      for (std::size_t i = 0; i < n; ++i) {
+        const double scalar = t.eval({pts.data() + 2 * i, 2});
+        INFO("n = " << n << ", point " << i << " = (" << pts[2 * i] << ", " << pts[2 * i + 1] << ")");
+        if (std::isnan(scalar))
+          CHECK(std::isnan(batch[i]));
+        else
+          CHECK(batch[i] == scalar);
+      }
+    }
+  }
+}

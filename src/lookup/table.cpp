@@ -1,4 +1,5 @@
 #include "lookup/table.hpp"
+#include "lookup/table_simd.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +39,18 @@ using interp::accumulate;
 
 }  // namespace
 
+#ifdef BRDFTAB_HAVE_AVX2_KERNELS
+namespace detail {
+bool cpu_has_avx2() {
+  static const bool has = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return has;
+}
+}  // namespace detail
+#endif
+
 template <int D, int K, class T>
 struct KernelImpl {
   static const T* data(const Table& tb) {
@@ -70,6 +83,17 @@ struct KernelImpl {
   // compiler vectorizes; pass 2 gathers the values and sums.
   template <bool Identity>
   static void batch(const Table& tb, const double* pts, std::size_t n, double* out) {
+#ifdef BRDFTAB_HAVE_AVX2_KERNELS
+    if constexpr (K == 2 && D == 2 && Identity) {
+      if (detail::cpu_has_avx2() && tb.size_ < (std::size_t(1) << 31) - 1) {
+        const std::size_t n4 = n - n % 4;
+        detail::batch_2d_linear_identity_avx2<T>(tb.maps_.data(), tb.strides_[0], data(tb), pts, n4, out);
+        pts += 2 * n4;
+        out += n4;
+        n -= n4;
+      }
+    }
+#endif
     if constexpr (K == 2 && D <= 2) {  // short stencils: the one-pass loop is faster (measured)
       const auto maps = tb.maps_;
       const auto strides = tb.strides_;
