@@ -1,5 +1,5 @@
 #include "lookup/table.hpp"
-#include "lookup/table_simd.hpp"
+#include "lookup/detail/table_simd.hpp"
 
 #include <algorithm>
 #include <cmath>

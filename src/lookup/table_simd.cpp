@@ -1,7 +1,7 @@
 // This file is compiled with -mavx2 (CMakeLists.txt) and runs only when the CPU has AVX2.
 // It uses no inline function shared with other files: an AVX2 copy of one could be picked
 // by the linker for every caller (ODR).
-#include "lookup/table_simd.hpp"
+#include "lookup/detail/table_simd.hpp"
 
 #include <immintrin.h>
 
