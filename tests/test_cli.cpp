@@ -6,10 +6,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "generators/demo_family.hpp"
@@ -48,13 +50,27 @@ TEST_CASE("generate writes the table and a summary with its measured error") {
   CHECK(q.err.empty());
 }
 
-TEST_CASE("eval prints the input columns then the results with 17 significant digits") {
+TEST_CASE("eval prints the input columns then the results, shortest strings that round-trip") {
   const auto r = run_cli("eval demo_exp_cos --method exact", "x,y\n0.5,0.25\n3,1\n");
   REQUIRE(r.status == 0);
-  char expect[128];
-  std::snprintf(expect, sizeof expect, "x,y,value\n0.5,0.25,%.17g\n3,1,%.17g\n", brdftab::gen::demo_exp_cos_exact(0.5, 0.25),
-                std::exp(-3.0) * std::cos(1.0));
-  CHECK(r.out == expect);
+  // Each result reads back as exactly the closed-form double, and no shorter digit string
+  // (one digit fewer, rounded) would: the shortest round-trip form.
+  const double expect[2] = {std::exp(-0.5) * std::cos(0.25), std::exp(-3.0) * std::cos(1.0)};
+  std::vector<std::string> lines;
+  std::istringstream in(r.out);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  REQUIRE(lines.size() == 3);
+  CHECK(lines[0] == "x,y,value");
+  CHECK(lines[1].rfind("0.5,0.25,", 0) == 0);
+  CHECK(lines[2].rfind("3,1,", 0) == 0);
+  for (int i = 0; i < 2; ++i) {
+    const std::string cell = lines[i + 1].substr(lines[i + 1].rfind(',') + 1);
+    CHECK(std::strtod(cell.c_str(), nullptr) == expect[i]);
+    const std::size_t digits = cell.size() - cell.find('.') - 1;
+    char shorter[64];
+    std::snprintf(shorter, sizeof shorter, "%.*f", static_cast<int>(digits) - 1, expect[i]);
+    CHECK(std::strtod(shorter, nullptr) != expect[i]);
+  }
 }
 
 TEST_CASE("eval --method table agrees with the closed form within the table's stated error") {
@@ -140,6 +156,6 @@ TEST_CASE("generate rejects a bad manifest with exit 2 and names the key") {
   std::ofstream(d / "m.json") << R"({"schema_version": 1, "tables": {"demo": {"y_step": -3}}})";
   const auto r = run_cli("generate --quiet --manifest '" + (d / "m.json").string() + "' --out '" + d.string() + "'");
   CHECK(r.status == 2);
-  CHECK(r.err.find("tables.demo.y_step = -3 is outside [0.0001, 1]") != std::string::npos);
+  CHECK(r.err.find("tables.demo.y_step = -3 is outside [1e-04, 1]") != std::string::npos);
   CHECK(!fs::exists(d / "demo.h5"));
 }

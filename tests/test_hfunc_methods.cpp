@@ -163,7 +163,7 @@ TEST_CASE("hfunc: H rejects NaN and negative mu") {
   CHECK_THROWS_AS(fok(NAN), std::domain_error);
   // Beyond 1e20 the node range no longer holds the kernel (the results went wrong and then
   // NaN): refused, while mu = inf is the analytic limit.
-  CHECK_THROWS_WITH_AS(fok(1e25), "mu = 1.0000000000000001e+25 is outside the valid domain [0, 1e20] or +inf",
+  CHECK_THROWS_WITH_AS(fok(1e25), "mu = 1e+25 is outside the valid domain [0, 1e20] or +inf",
                        std::domain_error);
   CHECK_THROWS_AS(fok(1e300), std::domain_error);
   CHECK(std::isfinite(fok(INFINITY)));

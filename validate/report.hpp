@@ -28,7 +28,7 @@ struct Validation {
 // validate/registry.cpp lists them.
 const std::vector<Validation>& all_validations();
 
-// Writes a CSV file (header + rows, 17 significant digits).
+// Writes a CSV file (header + rows, shortest round-trip numbers).
 void write_csv(const std::filesystem::path& path, const std::vector<std::string>& header,
                const std::vector<std::vector<double>>& rows);
 

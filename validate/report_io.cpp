@@ -5,6 +5,8 @@
 
 #include "validate/report.hpp"
 
+#include "lookup/number_format.hpp"
+
 namespace brdftab::validate {
 
 void write_csv(const std::filesystem::path& path, const std::vector<std::string>& header,
@@ -13,12 +15,8 @@ void write_csv(const std::filesystem::path& path, const std::vector<std::string>
   if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
   for (std::size_t i = 0; i < header.size(); ++i) out << (i ? "," : "") << header[i];
   out << "\n";
-  char buf[40];
   for (const auto& r : rows) {
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      std::snprintf(buf, sizeof buf, "%.17g", r[i]);
-      out << (i ? "," : "") << buf;
-    }
+    for (std::size_t i = 0; i < r.size(); ++i) out << (i ? "," : "") << lookup::format_number(r[i]);
     out << "\n";
   }
 }

@@ -7,6 +7,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "lookup/number_format.hpp"
 #include "cli/commands.hpp"
 #include "cli/csv.hpp"
 #include "cli/quantity.hpp"
@@ -140,12 +141,12 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
       bool is_param = false;
       for (std::size_t i = 0; i < np; ++i)
         if (column_of[i] == static_cast<int>(c)) {
-          buffer << format17(inputs[r * np + i]);
+          buffer << lookup::format_number(inputs[r * np + i]);
           is_param = true;
         }
       if (!is_param) buffer << cells[r][c];
     }
-    for (double v : result) buffer << "," << format17(v);
+    for (double v : result) buffer << "," << lookup::format_number(v);
     buffer << "\n";
   }
   out << buffer.str();

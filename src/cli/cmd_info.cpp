@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <ostream>
 
+#include "lookup/number_format.hpp"
 #include "cli/commands.hpp"
 #include "cli/csv.hpp"
 #include "lookup/table_file.hpp"
@@ -13,7 +14,7 @@ namespace brdftab::cli {
 namespace {
 std::string show(const lookup::Attribute& a) {
   if (auto s = std::get_if<std::string>(&a)) return *s;
-  if (auto d = std::get_if<double>(&a)) return format17(*d);
+  if (auto d = std::get_if<double>(&a)) return lookup::format_number(*d);
   return std::to_string(std::get<long long>(a));
 }
 }  // namespace
@@ -36,8 +37,8 @@ int run_info(const std::filesystem::path& file, std::ostream& out, std::ostream&
       for (int d = 0; d < t.rank(); ++d) {
         const auto& a = t.axis(d);
         out << "    " << a.name << ": " << a.n << " points, transform " << lookup::transform_name(a.transform);
-        if (a.transform == lookup::Transform::x_over_k_plus_x) out << " (k = " << format17(a.scale) << ")";
-        out << ", range [" << format17(a.x_lo) << ", " << format17(a.x_hi) << "]";
+        if (a.transform == lookup::Transform::x_over_k_plus_x) out << " (k = " << lookup::format_number(a.scale) << ")";
+        out << ", range [" << lookup::format_number(a.x_lo) << ", " << lookup::format_number(a.x_hi) << "]";
         if (!a.units.empty()) out << ", units " << a.units;
         out << "\n";
       }

@@ -39,10 +39,4 @@ std::optional<double> parse_number(const std::string& cell) {
   return v;  // may be NaN or +-inf; the domain check decides
 }
 
-std::string format17(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 }  // namespace brdftab::cli

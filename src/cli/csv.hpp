@@ -11,7 +11,5 @@ namespace brdftab::cli {
 std::vector<std::string> split_csv_line(std::string_view line);
 // Parses the whole cell as a double (strtod); nullopt if it is not a number.
 std::optional<double> parse_number(const std::string& cell);
-// 17 significant digits: round-trips every double.
-std::string format17(double v);
 
 }  // namespace brdftab::cli

@@ -1,3 +1,4 @@
+#include "lookup/number_format.hpp"
 #include "lookup/axis.hpp"
 
 #include <array>
@@ -19,11 +20,7 @@ constexpr std::array<std::pair<Transform, std::string_view>, 7> kTransformNames{
     {Transform::fourth_root, "x^(1/4)"},
 }};
 
-std::string fmt(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string fmt(double v) { return format_number(v); }
 
 // The physical domain on which each transform is defined and finite.
 bool in_transform_domain(Transform t, double x) {

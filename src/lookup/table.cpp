@@ -1,3 +1,4 @@
+#include "lookup/number_format.hpp"
 #include "lookup/table.hpp"
 #include "lookup/detail/table_simd.hpp"
 
@@ -19,11 +20,7 @@ Interpolation interpolation_from_name(std::string_view name) {
 
 namespace {
 
-std::string fmt(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string fmt(double v) { return format_number(v); }
 
 // Stencil of one axis through its runtime transform (Identity = true skips it: all-identity
 // tables take that path).

@@ -1,3 +1,4 @@
+#include "lookup/number_format.hpp"
 #include "lookup/table_file.hpp"
 
 #include <hdf5.h>
@@ -29,9 +30,7 @@ std::string TableInfo::attribute_string(const std::string& key) const {
   if (it == attributes.end()) return "";
   if (auto s = std::get_if<std::string>(&it->second)) return *s;
   if (auto d = std::get_if<double>(&it->second)) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", *d);
-    return buf;
+    return format_number(*d);
   }
   return std::to_string(std::get<long long>(it->second));
 }
@@ -132,11 +131,7 @@ herr_t collect_scale(hid_t /*dset*/, unsigned /*dim*/, hid_t scale, void* out) {
   return 1;  // stop at the first scale
 }
 
-std::string fmt(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string fmt(double v) { return format_number(v); }
 
 Axis read_axis(const std::filesystem::path& file, const std::string& dataset, hid_t dset, unsigned dim,
                hsize_t expected_n) {

@@ -7,7 +7,7 @@
 
 namespace brdftab::numerics {
 
-// Formats a double with 17 significant digits (round-trips).
+// Formats a double as the shortest string that round-trips (lookup/number_format.hpp).
 std::string format_number(double v);
 
 // Throws std::domain_error("<name> = <value> is outside the valid domain <domain>")
