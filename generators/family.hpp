@@ -1,62 +1,92 @@
 #pragma once
-// The generator interface that every table family implements.
+// The generator side of a table family, and the adapter that turns a family's
+// Config / read_config / to_json / build into the Family interface used by `generate`,
+// the manifests and the tests.
 //
-// A family has a name (its manifest key and file stem: tables/<name>.h5), a default
-// manifest entry, a checker for manifest entries and a generate() that fills its grids
-// in parallel (see table_builder.hpp), measures their error off-grid and writes one
-// HDF5 file atomically.
-#include <filesystem>
-#include <functional>
+// Every family K provides, in generators/K.{hpp,cpp}, namespace brdftab::gen::K:
+//   struct Config;                                             // defaults = the default tables
+//   Config read_config(const nlohmann::json& entry);           // throws ManifestError naming the key
+//   nlohmann::json to_json(const Config&);                     // read_config(to_json(c)) == c
+//   std::vector<BuiltTable> build(const Config&, const GenerateContext&);  // in memory, error measured
+//   Config test_config();                                      // cheap (< 1 s), for the tests
+//   Config narrowed(Config);                                   // every range narrower: smaller tables
+//   inline constexpr const char* kSummary = "...";             // one line for --help and info
+// and its schema in src/lookup/K_schema.hpp (namespace brdftab::schema::K, kFile, kDatasets).
+// generators/family_list.hpp lists the families; generators/registry.cpp instantiates them.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "generators/generate_context.hpp"
+#include "generators/table_builder.hpp"
+
 namespace brdftab::gen {
-
-// Progress of a long run: stage text and fraction done in [0, 1].
-class Progress {
- public:
-  virtual ~Progress() = default;
-  virtual void update(const std::string& stage, double fraction) = 0;
-};
-
-struct GenerateContext {
-  std::filesystem::path out_dir;
-  Progress* progress = nullptr;  // may be null
-  void report(const std::string& stage, double fraction) const {
-    if (progress) progress->update(stage, fraction);
-  }
-};
-
-// One dataset a family wrote, with its cost and its measured accuracy.
-struct TableSummary {
-  std::string file;     // e.g. "hfunc.h5"
-  std::string dataset;  // e.g. "H_iso"
-  std::vector<std::size_t> shape;
-  std::string storage;  // "float32" | "float64"
-  std::string interpolation;
-  std::size_t bytes = 0;  // bytes of values
-  double max_abs_error = 0, max_rel_error = 0;  // measured off-grid
-  std::size_t error_samples = 0;
-  double seconds = 0;  // fill + measurement
-};
 
 class Family {
  public:
   virtual ~Family() = default;
-  virtual std::string name() const = 0;
+  virtual std::string name() const = 0;     // the family key: manifest key and file stem
   virtual std::string summary() const = 0;  // one line for --help and info
+  virtual std::string file() const = 0;     // "<name>.h5"
   virtual nlohmann::json default_entry() const = 0;
   // Rejects unknown keys, wrong types and impossible ranges with a ManifestError whose
-  // message names the key path (e.g. "tables.hfunc.c_range[1]"). Use EntryReader.
+  // message names the key path (e.g. "tables.hfunc.c_range[1]").
   virtual void check_entry(const nlohmann::json& entry) const = 0;
-  virtual std::vector<TableSummary> generate(const nlohmann::json& entry, const GenerateContext& ctx) const = 0;
+  // Builds the tables in memory (filled, error measured) without writing.
+  virtual std::vector<BuiltTable> build(const nlohmann::json& entry, const GenerateContext& ctx) const = 0;
+  // Builds and writes ctx.out_dir / file() atomically.
+  std::vector<TableSummary> generate(const nlohmann::json& entry, const GenerateContext& ctx) const {
+    return write_built_tables(file(), build(entry, ctx), ctx);
+  }
+  // A cheap entry for tests, and the same with narrower ranges (must give smaller tables).
+  virtual nlohmann::json test_entry() const = 0;
+  virtual nlohmann::json narrowed_test_entry() const = 0;
 };
 
-// All families compiled in, in generation order (generators/registry.cpp).
+// The adapter: one instance per family key (registry.cpp).
+template <class Config>
+struct FamilyParts {
+  const char* name;
+  const char* summary;
+  std::string_view file;
+  Config (*read_config)(const nlohmann::json&);
+  nlohmann::json (*to_json)(const Config&);
+  std::vector<BuiltTable> (*build)(const Config&, const GenerateContext&);
+  Config (*test_config)();
+  Config (*narrowed)(Config);
+};
+
+template <class Config>
+class FamilyOf final : public Family {
+ public:
+  explicit FamilyOf(FamilyParts<Config> p) : p_(p) {}
+  std::string name() const override { return p_.name; }
+  std::string summary() const override { return p_.summary; }
+  std::string file() const override { return std::string(p_.file); }
+  nlohmann::json default_entry() const override { return p_.to_json(Config{}); }
+  void check_entry(const nlohmann::json& entry) const override { p_.read_config(entry); }
+  std::vector<BuiltTable> build(const nlohmann::json& entry, const GenerateContext& ctx) const override {
+    return p_.build(p_.read_config(entry), ctx);
+  }
+  nlohmann::json test_entry() const override { return p_.to_json(p_.test_config()); }
+  nlohmann::json narrowed_test_entry() const override { return p_.to_json(p_.narrowed(p_.test_config())); }
+
+ private:
+  FamilyParts<Config> p_;
+};
+
+// All families compiled in, in the order of generators/family_list.hpp.
 const std::vector<std::unique_ptr<Family>>& all_families();
 const Family* find_family(const std::string& name);
 
 }  // namespace brdftab::gen
+
+// Defines K::make_family() inside namespace brdftab::gen::K from the family's parts; a part
+// missing or of the wrong type is a compile error here.
+#define BRDFTAB_DEFINE_FAMILY(K)                                                                         \
+  std::unique_ptr<::brdftab::gen::Family> make_family() {                                                \
+    return std::make_unique<::brdftab::gen::FamilyOf<Config>>(::brdftab::gen::FamilyParts<Config>{       \
+        #K, kSummary, ::brdftab::schema::K::kFile, &read_config, &to_json, &build, &test_config, &narrowed}); \
+  }

@@ -17,19 +17,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <regex>
 #include <set>
 #include <tuple>
 
-#include "generators/family.hpp"
 #include "generators/manifest.hpp"
-#include "numerics/domain_check.hpp"
+#include "lookup/number_format.hpp"
 #include "numerics/ghs_sigma_rel.hpp"
 
-namespace brdftab::gen {
+namespace brdftab::gen::ghs_sigma_rel {
 
-using numerics::format_number;
+namespace sc = schema::ghs_sigma_rel;
+using lookup::format_number;
 
 namespace {
 
@@ -43,38 +42,28 @@ constexpr const char* kMethod =
     "agrees with the polar form (long double) to ~1e-15";
 constexpr double kBDomainLo = 1e-8, kBDomainHi = 1e8;  // manifest limits on B
 
-// Defaults as steps, so narrower ranges give smaller tables at the same error.
-const GhsSigmaRelGrid kDefaultGrid{};
-const double kDefaultLogBStep = std::log(kDefaultGrid.B_hi / kDefaultGrid.B_lo) / (kDefaultGrid.B_points - 1);
-const double kDefaultWStep = 1.0 / (kDefaultGrid.w_points - 1);
-const double kDefaultLogCStep = std::log(kDefaultGrid.c_hi / kDefaultGrid.c_lo) / (kDefaultGrid.c_points - 1);
-
-int points_for(double span, double step) {
-  return std::max(4, static_cast<int>(std::ceil(span / step - 1e-9)) + 1);
-}
-
 lookup::Storage read_storage(EntryReader& r, const std::string& fallback) {
   return r.choice("precision", fallback, {"float32", "float64"}) == "float32" ? lookup::Storage::float32
                                                                              : lookup::Storage::float64;
 }
 
-struct Config {
-  bool materials_mode = false;
-  GhsSigmaRelGrid grid;
-  std::vector<GhsMaterial> materials;
-  int material_w_points = 257;
-  lookup::Storage material_storage = lookup::Storage::float64;
-};
+std::string storage_string(lookup::Storage s) { return std::string(lookup::storage_name(s)); }
+
+void add_common_attributes(BuiltTable& t, double w_scale) {
+  auto& a = t.dataset.attributes;
+  a["w_scale"] = w_scale;
+  a["w_definition"] = "w = log1p(K (1 - s)) / log1p(K), K = w_scale * B, s = sin(theta_i), B = b / lambda";
+  a["source"] = kSource;
+}
+
+}  // namespace
 
 Config read_config(const nlohmann::json& entry) {
-  const std::string path = "tables.ghs_sigma_rel";
-  EntryReader r(entry, path);
+  EntryReader r(entry, "tables.ghs_sigma_rel");
   Config c;
-  GhsSigmaRelGrid& g = c.grid;
-  std::tie(g.s_lo, g.s_hi) = r.range("s_range", {0.0, 1.0}, 0.0, 1.0);
-  g.w_scale = r.number("w_scale", g.w_scale, 0.01, 1000.0);
+  std::tie(c.s_lo, c.s_hi) = r.range("s_range", {0.0, 1.0}, 0.0, 1.0);
+  c.w_scale = r.number("w_scale", c.w_scale, 0.01, 1000.0);
   if (const nlohmann::json* list = r.raw("materials")) {
-    c.materials_mode = true;
     if (!list->is_array() || list->empty())
       throw ManifestError(r.key_path("materials") + ": expected a non-empty list of {\"name\", \"B\", \"c\"}");
     std::set<std::string> names;
@@ -83,7 +72,7 @@ Config read_config(const nlohmann::json& entry) {
       const std::string ipath = r.key_path("materials") + "[" + std::to_string(i) + "]";
       if (!(*list)[i].is_object()) throw ManifestError(ipath + ": expected an object {\"name\", \"B\", \"c\"}");
       EntryReader m((*list)[i], ipath);
-      GhsMaterial mat;
+      Material mat;
       const nlohmann::json* name = m.raw("name");
       if (!name || !name->is_string() || !std::regex_match(name->get<std::string>(), name_re))
         throw ManifestError(ipath + ".name: expected a string of 1-64 characters [A-Za-z0-9_.-]");
@@ -99,83 +88,59 @@ Config read_config(const nlohmann::json& entry) {
     c.material_w_points = static_cast<int>(r.integer("w_points", c.material_w_points, 4, 100000));
     c.material_storage = read_storage(r, "float64");
   } else {
-    std::tie(g.B_lo, g.B_hi) = r.range("B_range", {g.B_lo, g.B_hi}, kBDomainLo, kBDomainHi);
-    std::tie(g.c_lo, g.c_hi) = r.range("c_range", {g.c_lo, g.c_hi}, 1.0, numerics::kGhsCMax);
-    const double log_B_step = r.number("log_B_step", kDefaultLogBStep, 1e-4, 10.0);
-    const double w_step = r.number("w_step", kDefaultWStep, 1e-5, 0.5);
-    const double log_c_step = r.number("log_c_step", kDefaultLogCStep, 1e-5, 10.0);
-    g.storage = read_storage(r, "float32");
-    const auto [w_lo, w_hi] = ghs_sigma_rel_w_range(g.B_lo, g.B_hi, g.s_lo, g.s_hi, g.w_scale);
-    g.B_points = points_for(std::log(g.B_hi / g.B_lo), log_B_step);
-    g.w_points = points_for(w_hi - w_lo, w_step);
-    g.c_points = points_for(std::log(g.c_hi / g.c_lo), log_c_step);
+    std::tie(c.B_lo, c.B_hi) = r.range("B_range", {c.B_lo, c.B_hi}, kBDomainLo, kBDomainHi);
+    std::tie(c.c_lo, c.c_hi) = r.range("c_range", {c.c_lo, c.c_hi}, 1.0, numerics::kGhsCMax);
+    c.log_B_step = r.number("log_B_step", c.log_B_step, 1e-4, 10.0);
+    c.w_step = r.number("w_step", c.w_step, 1e-5, 0.5);
+    c.log_c_step = r.number("log_c_step", c.log_c_step, 1e-5, 10.0);
+    c.storage = read_storage(r, "float32");
   }
   r.finish();
   return c;
 }
 
-class GhsSigmaRelFamily final : public Family {
- public:
-  std::string name() const override { return "ghs_sigma_rel"; }
-  std::string summary() const override {
-    return "GHS diffraction renormalization sigma_rel^2(b/lambda, c, sin theta_i) (Holzschuch & Pacanowski Eq. 25): "
-           "3-D grid or one 1-D table per material";
+nlohmann::json to_json(const Config& c) {
+  nlohmann::json j = {{"s_range", {c.s_lo, c.s_hi}}, {"w_scale", c.w_scale}};
+  if (c.materials.empty()) {
+    j["B_range"] = {c.B_lo, c.B_hi};
+    j["c_range"] = {c.c_lo, c.c_hi};
+    j["log_B_step"] = c.log_B_step;
+    j["w_step"] = c.w_step;
+    j["log_c_step"] = c.log_c_step;
+    j["precision"] = storage_string(c.storage);
+  } else {
+    nlohmann::json list = nlohmann::json::array();
+    for (const Material& m : c.materials) list.push_back({{"name", m.name}, {"B", m.B}, {"c", m.c}});
+    j["materials"] = list;
+    j["w_points"] = c.material_w_points;
+    j["precision"] = storage_string(c.material_storage);
   }
-  nlohmann::json default_entry() const override {
-    const GhsSigmaRelGrid g;
-    return {{"B_range", {g.B_lo, g.B_hi}}, {"c_range", {g.c_lo, g.c_hi}}, {"s_range", {g.s_lo, g.s_hi}},
-            {"log_B_step", kDefaultLogBStep}, {"w_step", kDefaultWStep},  {"log_c_step", kDefaultLogCStep},
-            {"w_scale", g.w_scale},           {"precision", "float32"}};
-  }
-  void check_entry(const nlohmann::json& entry) const override { read_config(entry); }
-  std::vector<TableSummary> generate(const nlohmann::json& entry, const GenerateContext& ctx) const override {
-    const Config c = read_config(entry);
-    std::vector<BuiltTable> tables;
-    if (c.materials_mode) {
-      for (const GhsMaterial& m : c.materials)
-        tables.push_back(build_ghs_sigma_rel_material(m, c.grid.s_lo, c.grid.s_hi, c.material_w_points,
-                                                      c.grid.w_scale, c.material_storage, ctx));
-    } else {
-      tables.push_back(build_ghs_sigma_rel_grid(c.grid, ctx));
-    }
-    return write_built_tables(kGhsSigmaRelFile, std::move(tables), ctx);
-  }
-};
-
-void add_common_attributes(BuiltTable& t, double w_scale) {
-  auto& a = t.dataset.attributes;
-  a["w_scale"] = w_scale;
-  a["w_definition"] = "w = log1p(K (1 - s)) / log1p(K), K = w_scale * B, s = sin(theta_i), B = b / lambda";
-  a["source"] = kSource;
+  return j;
 }
 
-}  // namespace
-
-std::pair<double, double> ghs_sigma_rel_w_range(double B_lo, double B_hi, double s_lo, double s_hi, double w_scale) {
+std::pair<double, double> w_range(double B_lo, double B_hi, double s_lo, double s_hi, double w_scale) {
   // w decreases in s; over B take the extremes on a fine log sample (w is monotone in B
   // for fixed s, but sampling does not rely on it).
   double w_lo = 1, w_hi = 0;
   const int n = 2001;
   for (int i = 0; i < n; ++i) {
     const double B = B_lo * std::pow(B_hi / B_lo, static_cast<double>(i) / (n - 1));
-    w_lo = std::min(w_lo, lookup::ghs_sigma_rel_w(B, s_hi, w_scale));
-    w_hi = std::max(w_hi, lookup::ghs_sigma_rel_w(B, s_lo, w_scale));
+    w_lo = std::min(w_lo, sc::w_of_s(B, s_hi, w_scale));
+    w_hi = std::max(w_hi, sc::w_of_s(B, s_lo, w_scale));
   }
   w_lo = (s_hi >= 1) ? 0.0 : std::clamp(w_lo * (1 - 1e-12), 0.0, 1.0);
   w_hi = (s_lo <= 0) ? 1.0 : std::clamp(w_hi * (1 + 1e-12), 0.0, 1.0);
   return {w_lo, w_hi};
 }
 
-BuiltTable build_ghs_sigma_rel_grid(const GhsSigmaRelGrid& g, const GenerateContext& ctx) {
-  const auto [w_lo, w_hi] = ghs_sigma_rel_w_range(g.B_lo, g.B_hi, g.s_lo, g.s_hi, g.w_scale);
+BuiltTable build_grid(const Config& g, const GenerateContext& ctx) {
+  const auto [w_lo, w_hi] = w_range(g.B_lo, g.B_hi, g.s_lo, g.s_hi, g.w_scale);
   TableSpec spec;
-  spec.dataset = kGhsSigmaRelGrid;
-  spec.quantity =
-      "R(B, w, c) = sigma_rel^2(B, c, s) / F(1), F(1) = 1 - (1 + B^2)^(-(c-1)/2); "
-      "sigma_rel^2 = integral of S over the disk |f - s e| <= 1 (Eq. 25), S of Eq. 22 with sigma_s = 1";
-  spec.axes = {{"B", lookup::Transform::log, g.B_lo, g.B_hi, g.B_points, 1.0, "b/lambda"},
-               {"w", lookup::Transform::identity, w_lo, w_hi, g.w_points, 1.0, "log1p(K(1-s))/log1p(K), K = w_scale B"},
-               {"c", lookup::Transform::log, g.c_lo, g.c_hi, g.c_points, 1.0, "1"}};
+  spec.dataset = std::string(sc::kGrid.name);
+  spec.quantity = std::string(sc::kGrid.quantity);
+  spec.axes = {axis_spec(sc::kB, g.B_lo, g.B_hi, points_for_step(std::log(g.B_hi / g.B_lo), g.log_B_step)),
+               axis_spec(sc::kW, w_lo, w_hi, points_for_step(w_hi - w_lo, g.w_step)),
+               axis_spec(sc::kC, g.c_lo, g.c_hi, points_for_step(std::log(g.c_hi / g.c_lo), g.log_c_step))};
   spec.storage = g.storage;
   spec.interpolation = lookup::Interpolation::cubic;
   spec.domain = "B in [" + format_number(g.B_lo) + ", " + format_number(g.B_hi) + "], c in [" + format_number(g.c_lo) +
@@ -188,7 +153,7 @@ BuiltTable build_ghs_sigma_rel_grid(const GhsSigmaRelGrid& g, const GenerateCont
   const double w_scale = g.w_scale;
   const RowFunction row = [w_scale](std::span<const double> outer, std::span<const double> cs, std::span<double> out) {
     const double B = outer[0];
-    const numerics::GhsSigmaRelFixedBs at(B, lookup::ghs_sigma_rel_s(B, outer[1], w_scale));
+    const numerics::GhsSigmaRelFixedBs at(B, sc::s_of_w(B, outer[1], w_scale));
     for (std::size_t j = 0; j < cs.size(); ++j) out[j] = at.ratio_to_normal(cs[j] - 1);
   };
   BuiltTable t = build_table(spec, row, ctx);
@@ -198,28 +163,28 @@ BuiltTable build_ghs_sigma_rel_grid(const GhsSigmaRelGrid& g, const GenerateCont
   return t;
 }
 
-BuiltTable build_ghs_sigma_rel_material(const GhsMaterial& m, double s_lo, double s_hi, int w_points, double w_scale,
-                                        lookup::Storage storage, const GenerateContext& ctx) {
-  const double w_lo = (s_hi >= 1) ? 0.0 : lookup::ghs_sigma_rel_w(m.B, s_hi, w_scale);
-  const double w_hi = (s_lo <= 0) ? 1.0 : lookup::ghs_sigma_rel_w(m.B, s_lo, w_scale);
+BuiltTable build_material(const Material& m, const Config& c, const GenerateContext& ctx) {
+  const double w_lo = (c.s_hi >= 1) ? 0.0 : sc::w_of_s(m.B, c.s_hi, c.w_scale);
+  const double w_hi = (c.s_lo <= 0) ? 1.0 : sc::w_of_s(m.B, c.s_lo, c.w_scale);
   TableSpec spec;
-  spec.dataset = std::string(kGhsSigmaRelMaterialPrefix) + m.name;
-  spec.quantity = "sigma_rel^2(s) of material '" + m.name + "' (B = " + format_number(m.B) + ", c = " +
+  spec.dataset = std::string(sc::kMaterial.name) + m.name;
+  spec.quantity = std::string(sc::kMaterial.quantity) + m.name + "' (B = " + format_number(m.B) + ", c = " +
                   format_number(m.c) + ") on the w axis (Eq. 25)";
-  spec.axes = {{"w", lookup::Transform::identity, w_lo, w_hi, w_points, 1.0, "log1p(K(1-s))/log1p(K), K = w_scale B"}};
-  spec.storage = storage;
+  spec.axes = {axis_spec(sc::kW, w_lo, w_hi, c.material_w_points)};
+  spec.storage = c.material_storage;
   spec.interpolation = lookup::Interpolation::cubic;
-  spec.domain = "s in [" + format_number(s_lo) + ", " + format_number(s_hi) + "]";
+  spec.domain = "s in [" + format_number(c.s_lo) + ", " + format_number(c.s_hi) + "]";
   spec.method = kMethod;
   spec.generator = "ghs_sigma_rel";
   spec.error_rows = 16;
   spec.error_per_row = 256;
+  const double w_scale = c.w_scale;
   const RowFunction row = [m, w_scale](std::span<const double>, std::span<const double> ws, std::span<double> out) {
     for (std::size_t j = 0; j < ws.size(); ++j)
-      out[j] = numerics::GhsSigmaRelFixedBs(m.B, lookup::ghs_sigma_rel_s(m.B, ws[j], w_scale)).value(m.c - 1);
+      out[j] = numerics::GhsSigmaRelFixedBs(m.B, sc::s_of_w(m.B, ws[j], w_scale)).value(m.c - 1);
   };
   BuiltTable t = build_table(spec, row, ctx);
-  add_common_attributes(t, w_scale);
+  add_common_attributes(t, c.w_scale);
   t.dataset.attributes["material"] = m.name;
   t.dataset.attributes["B"] = m.B;
   t.dataset.attributes["c"] = m.c;
@@ -227,6 +192,35 @@ BuiltTable build_ghs_sigma_rel_material(const GhsMaterial& m, double s_lo, doubl
   return t;
 }
 
-std::unique_ptr<Family> make_ghs_sigma_rel_family() { return std::make_unique<GhsSigmaRelFamily>(); }
+std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
+  std::vector<BuiltTable> tables;
+  if (c.materials.empty()) {
+    tables.push_back(build_grid(c, ctx));
+  } else {
+    for (const Material& m : c.materials) tables.push_back(build_material(m, c, ctx));
+  }
+  return tables;
+}
 
-}  // namespace brdftab::gen
+Config test_config() {
+  Config c;
+  c.B_lo = 0.1;
+  c.B_hi = 10;
+  c.c_hi = 4;
+  c.log_B_step = std::log(100.0) / 15;
+  c.w_step = 1.0 / 15;
+  c.log_c_step = std::log(4.0) / 11;
+  c.error_rows = 64;
+  c.error_per_row = 12;
+  return c;
+}
+
+Config narrowed(Config c) {
+  c.B_hi = std::sqrt(c.B_lo * c.B_hi);
+  c.c_hi = std::sqrt(c.c_lo * c.c_hi);
+  return c;
+}
+
+BRDFTAB_DEFINE_FAMILY(ghs_sigma_rel)
+
+}  // namespace brdftab::gen::ghs_sigma_rel

@@ -1,23 +1,25 @@
-// Every table family compiled into brdftab, in generation order.
+// Every table family compiled into brdftab, from generators/family_list.hpp.
 #include <memory>
 #include <vector>
 
 #include "generators/family.hpp"
+#include "generators/family_list.hpp"
 
 namespace brdftab::gen {
 
-std::unique_ptr<Family> make_demo_family();
-std::unique_ptr<Family> make_smith_gbeckmann_family();
-std::unique_ptr<Family> make_hfunc_family();
-std::unique_ptr<Family> make_ghs_sigma_rel_family();
+#define BRDFTAB_DECLARE(K) \
+  namespace K {            \
+  std::unique_ptr<Family> make_family(); \
+  }
+BRDFTAB_FAMILIES(BRDFTAB_DECLARE)
+#undef BRDFTAB_DECLARE
 
 const std::vector<std::unique_ptr<Family>>& all_families() {
   static const std::vector<std::unique_ptr<Family>> families = [] {
     std::vector<std::unique_ptr<Family>> v;
-    v.push_back(make_demo_family());
-    v.push_back(make_smith_gbeckmann_family());
-    v.push_back(make_hfunc_family());
-    v.push_back(make_ghs_sigma_rel_family());
+#define BRDFTAB_ADD(K) v.push_back(K::make_family());
+    BRDFTAB_FAMILIES(BRDFTAB_ADD)
+#undef BRDFTAB_ADD
     return v;
   }();
   return families;

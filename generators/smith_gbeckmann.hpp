@@ -1,21 +1,36 @@
 #pragma once
 // Table family smith_gbeckmann: Smith G1 of the generalized Beckmann distribution
-// (Holzschuch & Pacanowski, Sec. 4.2, Eq. 41-42), see smith_gbeckmann.cpp.
-#include <string>
+// (Holzschuch & Pacanowski, Sec. 4.2, Eq. 41-42), see smith_gbeckmann.cpp; schema in
+// lookup/smith_gbeckmann_schema.hpp.
+#include <cmath>
+#include <vector>
 
-namespace brdftab::gen {
+#include <nlohmann/json.hpp>
 
-inline constexpr const char* kSmithGBeckmannFile = "smith_gbeckmann.h5";
-inline constexpr const char* kSmithGBeckmannCompact = "G1_compact";
-inline constexpr const char* kSmithGBeckmannPrecise = "G1_precise";
+#include "generators/family.hpp"
 
-// The default grids (also used by validation and benchmarks to build variants in memory).
-struct SmithGBeckmannGrid {
+namespace brdftab::gen::smith_gbeckmann {
+
+inline constexpr const char* kSummary =
+    "Smith G1 of the generalized Beckmann NDF (Holzschuch & Pacanowski Eq. 41-42), compact 10 kB + precise";
+
+// Resolution as steps (log p per point) and b points, so a narrower p range gives a smaller
+// table at the same error. The defaults are the default tables: compact 25 x 100 float32
+// (the paper's 10 kB budget), precise 64 x 320 float64.
+struct Config {
   double p_lo = 0.25, p_hi = 4.0;
   double b_scale = 0.3;  // k of the b/(k+b) axis
-  int p_points = 25, b_points = 100;
+  double compact_log_p_step = std::log(16.0) / 24, precise_log_p_step = std::log(16.0) / 63;
+  int compact_b_points = 100, precise_b_points = 320;
+  bool compact = true, precise = true;
+  lookup::Interpolation compact_interpolation = lookup::Interpolation::cubic;
+  int error_rows = 400, error_per_row = 100;
 };
-SmithGBeckmannGrid smith_gbeckmann_compact_grid();
-SmithGBeckmannGrid smith_gbeckmann_precise_grid();
 
-}  // namespace brdftab::gen
+Config read_config(const nlohmann::json& entry);
+nlohmann::json to_json(const Config& c);
+std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx);
+Config test_config();
+Config narrowed(Config c);
+
+}  // namespace brdftab::gen::smith_gbeckmann

@@ -90,7 +90,7 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
   };
   std::vector<Worst> worst(rows);
   parallel_rows(rows, ctx, spec.dataset + ": measure", [&](std::size_t r) {
-    std::mt19937_64 rng(spec.seed + 7919 * r);
+    std::mt19937_64 rng(spec.seed + 7919 * r + 1000003ull * ctx.error_seed);
     std::uniform_real_distribution<double> uni(0.0, 1.0);
     auto sample = [&](const lookup::Axis& a) {
       // Strictly inside the range: u0 + f*(n-1)*du with f in (0, 1).

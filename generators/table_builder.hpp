@@ -5,12 +5,15 @@
 // axes and differ in the last axis. A row function receives the outer coordinates and
 // the list of last-axis values and fills the row, so it can reuse work along the row
 // (one set of quadrature nodes per c for all mu, say). Rows run in parallel (OpenMP).
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "generators/family.hpp"
+#include "generators/generate_context.hpp"
+#include "lookup/schema.hpp"
 #include "lookup/table.hpp"
 #include "tablewrite/table_writer.hpp"
 
@@ -24,6 +27,20 @@ struct AxisSpec {
   double scale = 1.0;  // k for x/(k+x)
   std::string units;
 };
+// An axis of the family schema (name, transform, units) over [lo, hi] with n points.
+inline AxisSpec axis_spec(const schema::AxisSchema& a, double lo, double hi, int n, double scale = 1.0) {
+  return {std::string(a.name), a.transform, lo, hi, n, scale, std::string(a.units)};
+}
+// Points of an axis that spans `span` in its transformed coordinate with at most `step`
+// between neighbours (at least 4, enough for cubic). Resolution given as a step makes a
+// narrower range give a smaller table at the same error.
+inline int points_for_step(double span, double step) {
+  return std::max(4, static_cast<int>(std::ceil(span / step - 1e-9)) + 1);
+}
+// The span of [lo, hi] in the transformed coordinate of t.
+inline double transformed_span(lookup::Transform t, double lo, double hi, double scale = 1.0) {
+  return std::abs(lookup::apply_transform(t, hi, scale) - lookup::apply_transform(t, lo, scale));
+}
 
 // row(outer, last_values, out): outer.size() == rank-1 (the outer coordinates),
 // out[j] = f(outer..., last_values[j]). Must be thread-safe.
@@ -38,7 +55,7 @@ struct TableSpec {
   lookup::Interpolation interpolation = lookup::Interpolation::cubic;
   std::string domain;    // human-readable domain, e.g. "c in [0, 1], mu in [0, 1]"
   std::string method;    // how the exact values were computed (quadrature, tolerances)
-  std::string generator; // family name
+  std::string generator; // family key
   std::string generator_version = "1";
   // Off-grid error measurement: error_rows random outer points (uniform in the
   // transformed coordinates), error_per_row random last-axis values each.

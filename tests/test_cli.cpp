@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "cli_runner.hpp"
-#include "generators/demo_family.hpp"
 
 namespace fs = std::filesystem;
 

@@ -41,19 +41,19 @@ std::string manifest_error(const nlohmann::json& entry) {
 TEST_CASE("ghs_sigma_rel table: w coordinate round trip and end points") {
   for (double B : {1e-2, 1.0, 1e3})
     for (double s : {0.0, 0.3, 0.999, 1.0}) {
-      const double w = lookup::ghs_sigma_rel_w(B, s, 8.0);
-      CHECK(std::abs(lookup::ghs_sigma_rel_s(B, w, 8.0) - s) <= 1e-13);
+      const double w = schema::ghs_sigma_rel::w_of_s(B, s, 8.0);
+      CHECK(std::abs(schema::ghs_sigma_rel::s_of_w(B, w, 8.0) - s) <= 1e-13);
     }
-  CHECK(lookup::ghs_sigma_rel_w(5.0, 0.0, 8.0) == doctest::Approx(1.0).epsilon(1e-15));
-  CHECK(lookup::ghs_sigma_rel_w(5.0, 1.0, 8.0) == 0.0);
+  CHECK(schema::ghs_sigma_rel::w_of_s(5.0, 0.0, 8.0) == doctest::Approx(1.0).epsilon(1e-15));
+  CHECK(schema::ghs_sigma_rel::w_of_s(5.0, 1.0, 8.0) == 0.0);
 }
 
 TEST_CASE("ghs_sigma_rel table: the committed default grid is within 1e-5 of the exact value") {
-  const fs::path file = fs::path(BRDFTAB_SOURCE_DIR) / "tables" / gen::kGhsSigmaRelFile;
+  const fs::path file = fs::path(BRDFTAB_SOURCE_DIR) / "tables" / schema::ghs_sigma_rel::kFile;
   REQUIRE(fs::exists(file));
-  const auto t = lookup::load_table(file, gen::kGhsSigmaRelGrid);
-  const double w_scale = t.info.attribute_number("w_scale", -1);
-  REQUIRE(w_scale > 0);
+  const auto t = lookup::load_table(file, std::string(schema::ghs_sigma_rel::kGrid.name));
+  const lookup::GhsSigmaRelGrid grid(t);
+  CHECK(grid.w_scale() == 8.0);
   CHECK(t.table.bytes() <= 4u * 1024 * 1024);
   // Points: B log-uniform in [0.01, 1000]; c uniform in [1, 10] or 1 + log-uniform
   // [1e-9, 9]; s uniform or 1 - log-uniform [1e-12, 1].
@@ -65,13 +65,13 @@ TEST_CASE("ghs_sigma_rel table: the committed default grid is within 1e-5 of the
     const double c = (i % 3 == 0) ? 1 + 1e-9 * std::pow(9e9, U(rng)) : 1 + 9 * U(rng);
     const double s = (i % 2 == 0) ? U(rng) : 1 - std::pow(1e-12, U(rng));
     const double exact = numerics::ghs_sigma_rel2(B, c, s);
-    const double table = lookup::ghs_sigma_rel2_grid(t.table, B, c, s, w_scale);
+    const double table = lookup::ghs_sigma_rel2(grid, B, c, s);
     worst = std::max(worst, std::abs(table / exact - 1));
   }
   MESSAGE("committed grid: max relative error at 3000 random points = " << worst);
   CHECK(worst <= 1e-5);
   // The grid holds c = 1 (the limit); s = 1 and s = 0 exactly are grid lines.
-  CHECK(std::abs(lookup::ghs_sigma_rel2_grid(t.table, 3.0, 1 + 1e-9, 1.0, w_scale) /
+  CHECK(std::abs(lookup::ghs_sigma_rel2(grid, 3.0, 1 + 1e-9, 1.0) /
                      numerics::ghs_sigma_rel2(3.0, 1 + 1e-9, 1.0) - 1) <= 1e-5);
 }
 
@@ -92,9 +92,10 @@ TEST_CASE("ghs_sigma_rel table: per-material 1-D tables (manifest form with mate
     double B, c;
   };
   for (M m : {M{"gold", 0.8, 2.3}, M{"steel", 420.0, 1.0001}}) {
-    const auto t = lookup::load_table(dir / gen::kGhsSigmaRelFile, std::string(gen::kGhsSigmaRelMaterialPrefix) + m.name);
+    const auto t = lookup::load_table(dir / schema::ghs_sigma_rel::kFile,
+                                      std::string(schema::ghs_sigma_rel::kMaterial.name) + m.name);
     CHECK(t.info.attribute_number("B", -1) == m.B);
-    const lookup::GhsSigmaRelMaterial lookup_m(t.table, m.B, t.info.attribute_number("w_scale", -1));
+    const lookup::GhsSigmaRelMaterial lookup_m(t);
     double worst = 0;
     for (int i = 0; i <= 400; ++i) {
       const double s = (i % 2) ? i / 400.0 : 1 - std::pow(1e-12, i / 400.0);

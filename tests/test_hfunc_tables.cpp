@@ -17,7 +17,7 @@
 #include "generators/family.hpp"
 #include "generators/hfunc.hpp"
 #include "generators/manifest.hpp"
-#include "lookup/hfunc_lookup.hpp"
+#include "lookup/hfunc.hpp"
 #include "lookup/table_file.hpp"
 #include "numerics/hfunction_nystrom.hpp"
 
@@ -62,10 +62,10 @@ TEST_CASE("hfunc tables: a narrower manifest entry gives smaller tables at the s
   const auto summaries = family->generate(entry, ctx);
   REQUIRE(summaries.size() == 2);
   for (const auto& s : summaries) {
-    const bool compact = s.dataset == gen::hfunc_dataset(HKind::ls1, true);
-    CHECK((compact || s.dataset == gen::hfunc_dataset(HKind::ls1, false)));
+    const bool compact = s.dataset == std::string(schema::hfunc::dataset(HKind::ls1, true).name);
+    CHECK((compact || s.dataset == std::string(schema::hfunc::dataset(HKind::ls1, false).name)));
     CHECK(s.max_rel_error <= (compact ? 1e-4 : 1e-7));
-    const auto t = lookup::load_table(dir / gen::kHfuncFile, s.dataset);
+    const auto t = lookup::load_table(dir / schema::hfunc::kFile, s.dataset);
     CHECK(t.table.axis(0).n < (compact ? 64 : 160));  // half of the sqrt(1-c) range
     CHECK(t.table.axis(0).x_lo == 0.75);
     CHECK(error_against_method2(t.table, HKind::ls1, 5) <= (compact ? 1e-4 : 1e-7));
@@ -87,12 +87,12 @@ TEST_CASE("hfunc tables: manifest entries are checked") {
 }
 
 TEST_CASE("hfunc tables: committed default tables meet the budgets (<= 512 KB at 1e-7, <= 16 KB at 1e-4)") {
-  const fs::path file = fs::path(BRDFTAB_SOURCE_DIR) / "tables" / gen::kHfuncFile;
+  const fs::path file = fs::path(BRDFTAB_SOURCE_DIR) / "tables" / schema::hfunc::kFile;
   REQUIRE(fs::exists(file));
   for (HKind kind : {HKind::isotropic, HKind::ls0, HKind::ls1, HKind::ls2})
     for (bool compact : {false, true}) {
-      const auto t = lookup::load_table(file, gen::hfunc_dataset(kind, compact));
-      INFO(gen::hfunc_dataset(kind, compact));
+      const auto t = lookup::load_table(file, std::string(schema::hfunc::dataset(kind, compact).name));
+      INFO(std::string(schema::hfunc::dataset(kind, compact).name));
       CHECK(t.table.bytes() <= (compact ? 16u * 1024 : 512u * 1024));
       CHECK(t.table.storage() == (compact ? lookup::Storage::float32 : lookup::Storage::float64));
       const double budget = compact ? 1e-4 : 1e-7;
@@ -164,15 +164,15 @@ TEST_CASE("hfunc cli: no fit for mode 2 or the isotropic H; bad input exits 2 na
   CHECK(r.err.find("column 'c': value '-0.1' is outside the valid domain [0, 1]") != std::string::npos);
 }
 
-TEST_CASE("hfunc tables: the inlined HFunctionLookup equals Table::eval2 (same interpolation, cubic and linear)") {
-  const fs::path file = fs::path(BRDFTAB_SOURCE_DIR) / "tables" / gen::kHfuncFile;
-  const auto compact = lookup::load_table(file, gen::hfunc_dataset(HKind::ls0, true));
-  const auto precise = lookup::load_table(file, gen::hfunc_dataset(HKind::ls1, false));
-  const auto linear = lookup::load_table(file, gen::hfunc_dataset(HKind::ls1, true));
+TEST_CASE("hfunc tables: the inlined HfuncTable equals Table::eval2 (same interpolation, cubic and linear)") {
+  const fs::path file = fs::path(BRDFTAB_SOURCE_DIR) / "tables" / schema::hfunc::kFile;
+  const auto compact = lookup::load_table(file, std::string(schema::hfunc::dataset(HKind::ls0, true).name));
+  const auto precise = lookup::load_table(file, std::string(schema::hfunc::dataset(HKind::ls1, false).name));
+  const auto linear = lookup::load_table(file, std::string(schema::hfunc::dataset(HKind::ls1, true).name));
   REQUIRE(linear.table.interpolation() == lookup::Interpolation::linear);
-  const lookup::HFunctionLookup<float> fc(compact.table), fl(linear.table);
-  const lookup::HFunctionLookup<double> fp(precise.table);
-  CHECK_THROWS_AS(lookup::HFunctionLookup<double>(compact.table), std::invalid_argument);
+  const lookup::HfuncTable<float> fc(compact.table), fl(linear.table);
+  const lookup::HfuncTable<double> fp(precise.table);
+  CHECK_THROWS_AS(lookup::HfuncTable<double>(compact.table), std::invalid_argument);
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> uni(-0.1, 1.1);  // includes clamped points outside [0, 1]
   for (int i = 0; i < 2000; ++i) {

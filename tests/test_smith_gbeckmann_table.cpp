@@ -12,7 +12,7 @@
 #include "generators/family.hpp"
 #include "generators/manifest.hpp"
 #include "generators/smith_gbeckmann.hpp"
-#include "lookup/smith_gbeckmann_g1.hpp"
+#include "lookup/smith_gbeckmann.hpp"
 #include "lookup/table_file.hpp"
 #include "numerics/smith_gbeckmann_lambda.hpp"
 
@@ -20,9 +20,10 @@ namespace fs = std::filesystem;
 using namespace brdftab;
 
 namespace {
-const fs::path kTableFile = fs::path(BRDFTAB_SOURCE_DIR) / "tables" / gen::kSmithGBeckmannFile;
+const fs::path kTableFile = fs::path(BRDFTAB_SOURCE_DIR) / "tables" / schema::smith_gbeckmann::kFile;
 
-double max_error_at_random_points(const lookup::Table& t, int n, unsigned seed) {
+double max_error_at_random_points(const lookup::Table& table, int n, unsigned seed) {
+  const lookup::SmithGBeckmannTable t(table);
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   double worst = 0;
@@ -30,7 +31,7 @@ double max_error_at_random_points(const lookup::Table& t, int n, unsigned seed) 
     const double p = 0.25 + 3.75 * uni(rng);
     const double a = std::tan(1.5707963267948966 * uni(rng));
     const double exact = numerics::smith_gbeckmann_g1(a, p);
-    const double approx = lookup::smith_gbeckmann_g1(t, a, p, lookup::smith_gbeckmann_a_scale(p));
+    const double approx = lookup::smith_gbeckmann_g1(t, a, p, schema::smith_gbeckmann::first_moment(p));
     worst = std::max(worst, std::abs(approx - exact));
   }
   return worst;
@@ -39,8 +40,8 @@ double max_error_at_random_points(const lookup::Table& t, int n, unsigned seed) 
 
 TEST_CASE("smith_gbeckmann table: compact (<= 10 kB) within 1e-5, precise within 1e-8, off-grid") {
   REQUIRE(fs::exists(kTableFile));
-  const auto compact = lookup::load_table(kTableFile, gen::kSmithGBeckmannCompact);
-  const auto precise = lookup::load_table(kTableFile, gen::kSmithGBeckmannPrecise);
+  const auto compact = lookup::load_table(kTableFile, std::string(schema::smith_gbeckmann::kG1Compact.name));
+  const auto precise = lookup::load_table(kTableFile, std::string(schema::smith_gbeckmann::kG1Precise.name));
   CHECK(compact.table.bytes() <= 10000);
   const double e_compact = max_error_at_random_points(compact.table, 3000, 7);
   const double e_precise = max_error_at_random_points(precise.table, 3000, 8);
@@ -53,15 +54,17 @@ TEST_CASE("smith_gbeckmann table: compact (<= 10 kB) within 1e-5, precise within
 }
 
 TEST_CASE("smith_gbeckmann table: G1 = 1 at normal incidence, 0 at grazing, within [0, 1]") {
-  const auto t = lookup::load_table(kTableFile, gen::kSmithGBeckmannPrecise);
+  const auto loaded = lookup::load_table(kTableFile, std::string(schema::smith_gbeckmann::kG1Precise.name));
+  const lookup::SmithGBeckmannTable t(loaded.table);
+  // M1 at p = 1 (Beckmann) in closed form: Gamma(3/2) / pi = 1 / (2 sqrt(pi)).
+  CHECK(schema::smith_gbeckmann::first_moment(1.0) == doctest::Approx(0.5 / std::sqrt(M_PI)).epsilon(1e-15));
   for (double p : {0.25, 0.7, 1.0, 2.5, 4.0}) {
-    const double m1 = lookup::smith_gbeckmann_a_scale(p);
-    CHECK(std::abs(m1 - numerics::gbeckmann_first_moment(p)) < 1e-14 * m1);
-    CHECK(lookup::smith_gbeckmann_g1(t.table, 0.0, p, m1) == doctest::Approx(1.0).epsilon(1e-15));
-    CHECK(lookup::smith_gbeckmann_g1(t.table, std::numeric_limits<double>::infinity(), p, m1) ==
+    const double m1 = schema::smith_gbeckmann::first_moment(p);
+    CHECK(lookup::smith_gbeckmann_g1(t, 0.0, p, m1) == doctest::Approx(1.0).epsilon(1e-15));
+    CHECK(lookup::smith_gbeckmann_g1(t, std::numeric_limits<double>::infinity(), p, m1) ==
           doctest::Approx(0.0));
     for (double a = 1e-3; a < 1e6; a *= 1.7) {
-      const double g = lookup::smith_gbeckmann_g1(t.table, a, p, m1);
+      const double g = lookup::smith_gbeckmann_g1(t, a, p, m1);
       CHECK(g >= -1e-8);
       CHECK(g <= 1.0 + 1e-8);
     }

@@ -19,7 +19,9 @@
 #include "numerics/ghs_sigma_rel.hpp"
 #include "validate/bench.hpp"
 
-namespace brdftab::validate {
+namespace brdftab::validate::ghs_sigma_rel {
+
+namespace fam = gen::ghs_sigma_rel;
 
 namespace {
 
@@ -43,7 +45,7 @@ std::shared_ptr<Points> make_points(std::size_t n) {
 
 }  // namespace
 
-void register_ghs_sigma_rel_benchmarks(const BenchContext& ctx) {
+void register_benchmarks(const BenchContext& ctx) {
   auto pts = make_points(1024);
 
   benchmark::RegisterBenchmark("ghs_sigma_rel/exact/one_dimensional_form", [pts](benchmark::State& state) {
@@ -54,43 +56,39 @@ void register_ghs_sigma_rel_benchmarks(const BenchContext& ctx) {
   })->Unit(benchmark::kMillisecond);
 
   // 3-D grid: the committed table if present, else the default grid built in memory.
-  auto grid = std::make_shared<lookup::Table>();
-  double w_scale = lookup::kGhsSigmaRelDefaultWScale;
-  const auto file = ctx.tables_dir / gen::kGhsSigmaRelFile;
+  auto table = std::make_shared<lookup::LoadedTable>();
+  const auto file = ctx.tables_dir / schema::ghs_sigma_rel::kFile;
   try {
-    auto loaded = lookup::load_table(file, gen::kGhsSigmaRelGrid);
-    w_scale = loaded.info.attribute_number("w_scale", w_scale);
-    *grid = std::move(loaded.table);
+    *table = lookup::load_table(file, std::string(schema::ghs_sigma_rel::kGrid.name));
   } catch (const std::exception&) {
-    gen::GenerateContext gctx;
-    *grid = gen::build_ghs_sigma_rel_grid(gen::GhsSigmaRelGrid{}, gctx).dataset.table;
+    const gen::BuiltTable built = fam::build_grid(fam::Config{}, gen::GenerateContext{});
+    table->table = built.dataset.table;
+    table->info.attributes["w_scale"] = fam::Config{}.w_scale;
+    table->info.attributes["quantity"] = std::string(schema::ghs_sigma_rel::kGrid.quantity);
   }
-  benchmark::RegisterBenchmark("ghs_sigma_rel/table/grid_3d", [pts, grid, w_scale](benchmark::State& state) {
+  auto grid = std::make_shared<lookup::GhsSigmaRelGrid>(*table);
+  benchmark::RegisterBenchmark("ghs_sigma_rel/table/grid_3d", [pts, table, grid](benchmark::State& state) {
     for (auto _ : state)
       for (std::size_t i = 0; i < pts->B.size(); ++i)
-        benchmark::DoNotOptimize(lookup::ghs_sigma_rel2_grid(*grid, pts->B[i], pts->c[i], pts->s[i], w_scale));
+        benchmark::DoNotOptimize(lookup::ghs_sigma_rel2(*grid, pts->B[i], pts->c[i], pts->s[i]));
     double max_rel = 0;
     for (std::size_t i = 0; i < pts->B.size(); ++i)
-      max_rel = std::max(max_rel, std::abs(lookup::ghs_sigma_rel2_grid(*grid, pts->B[i], pts->c[i], pts->s[i], w_scale) /
+      max_rel = std::max(max_rel, std::abs(lookup::ghs_sigma_rel2(*grid, pts->B[i], pts->c[i], pts->s[i]) /
                                                pts->exact[i] - 1));
     per_call(state, pts->B.size());
     state.counters["max_rel_err"] = max_rel;
-    state.counters["table_bytes"] = static_cast<double>(grid->bytes());
+    state.counters["table_bytes"] = static_cast<double>(table->table.bytes());
   });
 
   // Per-material 1-D table (257 points, float64): one material, s varying.
   {
-    const gen::GhsMaterial m{"bench", 37.0, 1.8};
-    gen::GenerateContext gctx;
-    auto table = std::make_shared<lookup::Table>(
-        gen::build_ghs_sigma_rel_material(m, 0.0, 1.0, 257, lookup::kGhsSigmaRelDefaultWScale,
-                                          lookup::Storage::float64, gctx)
-            .dataset.table);
+    const fam::Material m{"bench", 37.0, 1.8};
+    auto table = std::make_shared<lookup::Table>(fam::build_material(m, fam::Config{}, gen::GenerateContext{}).dataset.table);
     auto s_exact = std::make_shared<std::vector<std::pair<double, double>>>();
     for (std::size_t i = 0; i < pts->s.size(); ++i)
       s_exact->push_back({pts->s[i], numerics::ghs_sigma_rel2(m.B, m.c, pts->s[i])});
     benchmark::RegisterBenchmark("ghs_sigma_rel/table/material_1d", [m, table, s_exact](benchmark::State& state) {
-      const lookup::GhsSigmaRelMaterial lm(*table, m.B, lookup::kGhsSigmaRelDefaultWScale);
+      const lookup::GhsSigmaRelMaterial lm(*table, m.B, fam::Config{}.w_scale);
       for (auto _ : state)
         for (const auto& [s, e] : *s_exact) benchmark::DoNotOptimize(lm(s));
       double max_rel = 0;
@@ -125,4 +123,4 @@ void register_ghs_sigma_rel_benchmarks(const BenchContext& ctx) {
   register_generation_benchmark("ghs_sigma_rel/generate/8_materials", "ghs_sigma_rel", {{"materials", materials}});
 }
 
-}  // namespace brdftab::validate
+}  // namespace brdftab::validate::ghs_sigma_rel

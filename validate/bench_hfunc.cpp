@@ -14,13 +14,13 @@
 
 #include "generators/family.hpp"
 #include "generators/hfunc.hpp"
-#include "lookup/hfunc_lookup.hpp"
+#include "lookup/hfunc.hpp"
 #include "lookup/table_file.hpp"
 #include "numerics/hfunction_fit.hpp"
 #include "numerics/hfunction_fok.hpp"
 #include "validate/bench.hpp"
 
-namespace brdftab::validate {
+namespace brdftab::validate::hfunc {
 
 namespace {
 
@@ -46,7 +46,7 @@ std::shared_ptr<Points> make_points(std::size_t n) {
 
 }  // namespace
 
-void register_hfunc_benchmarks(const BenchContext& ctx) {
+void register_benchmarks(const BenchContext& ctx) {
   auto pts = make_points(1024);
 
   // Exact, row-batched: one FokHRow per c (log K at 701 nodes), then `per_row` values of mu.
@@ -83,11 +83,11 @@ void register_hfunc_benchmarks(const BenchContext& ctx) {
   });
 
   // Table lookups (tables from --tables DIR if present).
-  const auto file = ctx.tables_dir / gen::kHfuncFile;
+  const auto file = ctx.tables_dir / schema::hfunc::kFile;
   if (std::filesystem::exists(file)) {
     for (HKind kind : {HKind::ls0, HKind::ls1})
       for (bool compact : {false, true}) {
-        const std::string ds = gen::hfunc_dataset(kind, compact);
+        const std::string ds(schema::hfunc::dataset(kind, compact).name);
         std::shared_ptr<lookup::LoadedTable> table;
         try {
           table = std::make_shared<lookup::LoadedTable>(lookup::load_table(file, ds));
@@ -106,7 +106,7 @@ void register_hfunc_benchmarks(const BenchContext& ctx) {
           state.counters["max_rel_err"] = e;
           state.counters["table_bytes"] = static_cast<double>(t.bytes());
         });
-        // The family's inlined lookup (lookup/hfunc_lookup.hpp), same interpolation.
+        // The family's inlined lookup (lookup/hfunc.hpp), same interpolation.
         auto register_inlined = [&](auto f) {
           benchmark::RegisterBenchmark(("hfunc/table_inlined/" + ds).c_str(), [pts, f, is0](benchmark::State& state) {
             for (auto _ : state)
@@ -119,9 +119,9 @@ void register_hfunc_benchmarks(const BenchContext& ctx) {
           });
         };
         if (compact)
-          register_inlined(std::make_shared<lookup::HFunctionLookup<float>>(table->table));
+          register_inlined(std::make_shared<lookup::HfuncTable<float>>(table->table));
         else
-          register_inlined(std::make_shared<lookup::HFunctionLookup<double>>(table->table));
+          register_inlined(std::make_shared<lookup::HfuncTable<double>>(table->table));
         benchmark::RegisterBenchmark(("hfunc/table_batch/" + ds).c_str(), [pts, table](benchmark::State& state) {
           const lookup::Table& t = table->table;
           std::vector<double> xy(2 * pts->c.size()), out(pts->c.size());
@@ -138,4 +138,4 @@ void register_hfunc_benchmarks(const BenchContext& ctx) {
   register_generation_benchmark("hfunc/generate/default_tables", "hfunc", gen::find_family("hfunc")->default_entry());
 }
 
-}  // namespace brdftab::validate
+}  // namespace brdftab::validate::hfunc

@@ -1,19 +1,25 @@
-// Every benchmark group of `brdftab bench`.
+// Every benchmark group of `brdftab bench`: the lookup library's own, then one per family
+// of generators/family_list.hpp.
+#include "generators/family_list.hpp"
 #include "validate/bench.hpp"
 
 namespace brdftab::validate {
 
 void register_lookup_benchmarks(const BenchContext& ctx);
-void register_smith_gbeckmann_benchmarks(const BenchContext& ctx);
-void register_hfunc_benchmarks(const BenchContext& ctx);
-void register_ghs_sigma_rel_benchmarks(const BenchContext& ctx);
+
+#define BRDFTAB_DECLARE(K) \
+  namespace K {            \
+  void register_benchmarks(const BenchContext& ctx); \
+  }
+BRDFTAB_FAMILIES(BRDFTAB_DECLARE)
+#undef BRDFTAB_DECLARE
 
 const std::vector<BenchRegistration>& all_bench_registrations() {
   static const std::vector<BenchRegistration> v = {
       &register_lookup_benchmarks,
-      &register_smith_gbeckmann_benchmarks,
-      &register_hfunc_benchmarks,
-      &register_ghs_sigma_rel_benchmarks,
+#define BRDFTAB_ADD(K) &K::register_benchmarks,
+      BRDFTAB_FAMILIES(BRDFTAB_ADD)
+#undef BRDFTAB_ADD
   };
   return v;
 }

@@ -14,13 +14,13 @@
 
 #include "generators/family.hpp"
 #include "generators/smith_gbeckmann.hpp"
-#include "lookup/smith_gbeckmann_g1.hpp"
+#include "lookup/smith_gbeckmann.hpp"
 #include "lookup/table_file.hpp"
 #include "numerics/smith_beckmann_closed_form.hpp"
 #include "numerics/smith_gbeckmann_lambda.hpp"
 #include "validate/bench.hpp"
 
-namespace brdftab::validate {
+namespace brdftab::validate::smith_gbeckmann {
 
 namespace {
 
@@ -39,7 +39,7 @@ std::shared_ptr<Points> make_points(std::size_t n) {
     const double a = std::tan(0.05 + 1.45 * uni(rng));
     pts->p.push_back(p);
     pts->a.push_back(a);
-    pts->m1.push_back(numerics::gbeckmann_first_moment(p));
+    pts->m1.push_back(schema::smith_gbeckmann::first_moment(p));
     pts->g1_exact.push_back(numerics::smith_gbeckmann_g1(a, p));
   }
   return pts;
@@ -47,10 +47,10 @@ std::shared_ptr<Points> make_points(std::size_t n) {
 
 }  // namespace
 
-void register_smith_gbeckmann_benchmarks(const BenchContext& ctx) {
+void register_benchmarks(const BenchContext& ctx) {
   auto pts = make_points(256);
 
-  benchmark::RegisterBenchmark("smith_gb/exact/lambda_single_integral", [pts](benchmark::State& state) {
+  benchmark::RegisterBenchmark("smith_gbeckmann/exact/lambda_single_integral", [pts](benchmark::State& state) {
     for (auto _ : state)
       for (std::size_t i = 0; i < pts->p.size(); ++i)
         benchmark::DoNotOptimize(numerics::smith_gbeckmann_lambda(pts->a[i], pts->p[i]));
@@ -59,7 +59,7 @@ void register_smith_gbeckmann_benchmarks(const BenchContext& ctx) {
 
   // The printed double integral is ~100x slower: a smaller set of points.
   auto few = make_points(8);
-  benchmark::RegisterBenchmark("smith_gb/exact/lambda_double_integral", [few](benchmark::State& state) {
+  benchmark::RegisterBenchmark("smith_gbeckmann/exact/lambda_double_integral", [few](benchmark::State& state) {
     double max_rel = 0;
     for (auto _ : state)
       for (std::size_t i = 0; i < few->p.size(); ++i) {
@@ -72,37 +72,40 @@ void register_smith_gbeckmann_benchmarks(const BenchContext& ctx) {
     state.counters["max_rel_diff_vs_single"] = max_rel;
   })->Unit(benchmark::kMillisecond);
 
-  benchmark::RegisterBenchmark("smith_gb/closed_form/beckmann_lambda", [pts](benchmark::State& state) {
+  benchmark::RegisterBenchmark("smith_gbeckmann/closed_form/beckmann_lambda", [pts](benchmark::State& state) {
     for (auto _ : state)
       for (std::size_t i = 0; i < pts->p.size(); ++i) benchmark::DoNotOptimize(numerics::beckmann_lambda(pts->a[i]));
     per_call(state, pts->p.size());
   });
 
   // Table lookups: the committed tables if present (--tables DIR), else nothing.
-  const auto file = ctx.tables_dir / gen::kSmithGBeckmannFile;
+  const auto file = ctx.tables_dir / schema::smith_gbeckmann::kFile;
   if (std::filesystem::exists(file)) {
-    for (const char* dataset : {gen::kSmithGBeckmannCompact, gen::kSmithGBeckmannPrecise}) {
-      auto table = std::make_shared<lookup::LoadedTable>(lookup::load_table(file, dataset));
-      benchmark::RegisterBenchmark((std::string("smith_gb/table/") + dataset).c_str(),
-                                   [pts, table](benchmark::State& state) {
+    for (const auto& ds : schema::smith_gbeckmann::kDatasets) {
+      const std::string dataset(ds.name);
+      auto loaded = std::make_shared<lookup::LoadedTable>(lookup::load_table(file, dataset));
+      auto table = std::make_shared<lookup::SmithGBeckmannTable>(loaded->table);
+      benchmark::RegisterBenchmark((std::string("smith_gbeckmann/table/") + dataset).c_str(),
+                                   [pts, loaded, table](benchmark::State& state) {
                                      for (auto _ : state)
                                        for (std::size_t i = 0; i < pts->p.size(); ++i)
                                          benchmark::DoNotOptimize(lookup::smith_gbeckmann_g1(
-                                             table->table, pts->a[i], pts->p[i], pts->m1[i]));
+                                             *table, pts->a[i], pts->p[i], pts->m1[i]));
                                      double max_abs = 0;
                                      for (std::size_t i = 0; i < pts->p.size(); ++i)
                                        max_abs = std::max(max_abs, std::abs(lookup::smith_gbeckmann_g1(
-                                                                               table->table, pts->a[i], pts->p[i],
+                                                                               *table, pts->a[i], pts->p[i],
                                                                                pts->m1[i]) -
                                                                            pts->g1_exact[i]));
                                      per_call(state, pts->p.size());
                                      state.counters["max_abs_err_G1"] = max_abs;
-                                     state.counters["table_bytes"] = static_cast<double>(table->table.bytes());
+                                     state.counters["table_bytes"] = static_cast<double>(loaded->table.bytes());
                                    });
     }
   }
 
-  register_generation_benchmark("smith_gb/generate/default_tables", "smith_gbeckmann", gen::find_family("smith_gbeckmann")->default_entry());
+  register_generation_benchmark("smith_gbeckmann/generate/default_tables", "smith_gbeckmann",
+                                gen::find_family("smith_gbeckmann")->default_entry());
 }
 
-}  // namespace brdftab::validate
+}  // namespace brdftab::validate::smith_gbeckmann

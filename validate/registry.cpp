@@ -1,19 +1,21 @@
-// Every validation section of `brdftab validate`, in report order.
+// Every validation section of `brdftab validate`, in family-list order.
+#include "generators/family_list.hpp"
 #include "validate/report.hpp"
 
 namespace brdftab::validate {
 
-void validate_demo(ReportContext& ctx);
-void validate_smith_gbeckmann(ReportContext& ctx);
-void validate_hfunc(ReportContext& ctx);
-void validate_ghs_sigma_rel(ReportContext& ctx);
+#define BRDFTAB_DECLARE(K) \
+  namespace K {            \
+  void report(ReportContext& ctx); \
+  }
+BRDFTAB_FAMILIES(BRDFTAB_DECLARE)
+#undef BRDFTAB_DECLARE
 
 const std::vector<Validation>& all_validations() {
   static const std::vector<Validation> v = {
-      {"demo", &validate_demo},
-      {"smith_gbeckmann", &validate_smith_gbeckmann},
-      {"hfunc", &validate_hfunc},
-      {"ghs_sigma_rel", &validate_ghs_sigma_rel},
+#define BRDFTAB_ADD(K) {#K, &K::report},
+      BRDFTAB_FAMILIES(BRDFTAB_ADD)
+#undef BRDFTAB_ADD
   };
   return v;
 }

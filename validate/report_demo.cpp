@@ -2,18 +2,19 @@
 #include <cmath>
 #include <numbers>
 
-#include "generators/demo_family.hpp"
+#include "lookup/demo_schema.hpp"
 #include "lookup/table_set.hpp"
+#include "numerics/demo_exp_cos.hpp"
 #include "validate/report.hpp"
 
-namespace brdftab::validate {
+namespace brdftab::validate::demo {
 
-void validate_demo(ReportContext& ctx) {
+void report(ReportContext& ctx) {
   auto& md = *ctx.markdown;
   md << "## demo (closed-form demonstration table)\n\n";
   const lookup::Table* table = nullptr;
   try {
-    table = &ctx.tables->table("demo.h5", "demo_exp_cos");
+    table = &ctx.tables->table(std::string(schema::demo::kFile), std::string(schema::demo::kExpCos.name));
   } catch (const std::exception& e) {
     md << "Table not available: " << e.what() << "\n\n";
     return;
@@ -29,7 +30,7 @@ void validate_demo(ReportContext& ctx) {
     const double x = lookup::invert_transform(ax.transform, u, ax.scale);
     for (int j = 0; j < ny; ++j) {
       const double y = ay.x_lo + (j + 0.5) / ny * (ay.x_hi - ay.x_lo);
-      const double err = std::abs((*table)(x, y) - gen::demo_exp_cos_exact(x, y));
+      const double err = std::abs((*table)(x, y) - numerics::demo_exp_cos(x, y));
       if (err > max_abs) max_abs = err, max_x = x, max_y = y;
       rows.push_back({u, y, std::max(err, 1e-18)});
     }
@@ -43,4 +44,4 @@ void validate_demo(ReportContext& ctx) {
   md << buf << "![demo error](demo_error.png)\n\n";
 }
 
-}  // namespace brdftab::validate
+}  // namespace brdftab::validate::demo

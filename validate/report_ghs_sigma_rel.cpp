@@ -23,7 +23,9 @@
 #include "numerics/ghs_sigma_rel_polar.hpp"
 #include "validate/report.hpp"
 
-namespace brdftab::validate {
+namespace brdftab::validate::ghs_sigma_rel {
+
+namespace fam = gen::ghs_sigma_rel;
 
 namespace {
 
@@ -70,11 +72,21 @@ Stats stats(std::vector<double> e) {
   s.median = e[e.size() / 2];
   return s;
 }
-Stats grid_errors(const lookup::Table& t, double w_scale, const std::vector<Point>& pts) {
+Stats grid_errors(const lookup::GhsSigmaRelGrid& g, const std::vector<Point>& pts) {
   std::vector<double> e(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i)
-    e[i] = std::abs(lookup::ghs_sigma_rel2_grid(t, pts[i].B, pts[i].c, pts[i].s, w_scale) / pts[i].exact - 1);
+    e[i] = std::abs(lookup::ghs_sigma_rel2(g, pts[i].B, pts[i].c, pts[i].s) / pts[i].exact - 1);
   return stats(e);
+}
+
+// The default grid's configuration with nB x nw x nc points over the default domain.
+fam::Config grid_config(int nB, int nw, int nc, lookup::Storage storage) {
+  fam::Config c;
+  c.log_B_step = std::log(c.B_hi / c.B_lo) / (nB - 1);
+  c.w_step = 1.0 / (nw - 1);
+  c.log_c_step = std::log(c.c_hi / c.c_lo) / (nc - 1);
+  c.storage = storage;
+  return c;
 }
 
 void section_exact(ReportContext& ctx) {
@@ -141,13 +153,13 @@ void section_committed_table(ReportContext& ctx, const std::vector<Point>& unifo
   md << "### Committed 3-D table\n\n";
   const lookup::LoadedTable* t = nullptr;
   try {
-    t = &ctx.tables->get(gen::kGhsSigmaRelFile, gen::kGhsSigmaRelGrid);
+    t = &ctx.tables->get(std::string(schema::ghs_sigma_rel::kFile), std::string(schema::ghs_sigma_rel::kGrid.name));
   } catch (const std::exception& e) {
     md << "Table not available: " << e.what() << "\n\n";
     return;
   }
-  const double w_scale = t->info.attribute_number("w_scale", lookup::kGhsSigmaRelDefaultWScale);
-  const Stats su = grid_errors(t->table, w_scale, uniform), ss = grid_errors(t->table, w_scale, stress);
+  const lookup::GhsSigmaRelGrid grid(*t);
+  const Stats su = grid_errors(grid, uniform), ss = grid_errors(grid, stress);
   md << "Shape " << t->table.axis(0).n << " x " << t->table.axis(1).n << " x " << t->table.axis(2).n << " ("
      << t->table.bytes() / 1024 << " KB, " << lookup::storage_name(t->table.storage())
      << ", cubic), generator's own off-grid max relative error " << sci(t->info.attribute_number("max_rel_error", -1))
@@ -173,7 +185,7 @@ void section_committed_table(ReportContext& ctx, const std::vector<Point>& unifo
       for (int k = 0; k < 8; ++k) {
         const double c = 1 + 9 * U(rng);
         const double exact = at.value(c - 1);
-        worst = std::max(worst, std::abs(lookup::ghs_sigma_rel2_grid(t->table, B, c, s, w_scale) / exact - 1));
+        worst = std::max(worst, std::abs(lookup::ghs_sigma_rel2(grid, B, c, s) / exact - 1));
       }
       rows[static_cast<std::size_t>(i) * ns + j] = {lb, s, std::max(worst, 1e-12)};
     }
@@ -200,12 +212,12 @@ void section_tradeoff(ReportContext& ctx, const std::vector<Point>& uniform, con
   std::vector<std::vector<double>> csv;
   gen::GenerateContext gctx;
   for (const Res& r : res) {
-    gen::GhsSigmaRelGrid g;
-    g.B_points = r.nB, g.w_points = r.nw, g.c_points = r.nc, g.storage = r.st;
+    const fam::Config g = grid_config(r.nB, r.nw, r.nc, r.st);
     const auto t0 = std::chrono::steady_clock::now();
-    const gen::BuiltTable bt = gen::build_ghs_sigma_rel_grid(g, gctx);
+    const gen::BuiltTable bt = fam::build_grid(g, gctx);
     const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const Stats su = grid_errors(bt.dataset.table, g.w_scale, uniform), ss = grid_errors(bt.dataset.table, g.w_scale, stress);
+    const lookup::GhsSigmaRelGrid lg(bt.dataset.table, g.w_scale);
+    const Stats su = grid_errors(lg, uniform), ss = grid_errors(lg, stress);
     md << "| " << r.nB << " x " << r.nw << " x " << r.nc << " | " << lookup::storage_name(r.st) << " | "
        << fix(bt.dataset.table.bytes() / 1e6) << " MB | " << fix(sec) << " | " << sci(bt.summary.max_rel_error) << " | "
        << sci(su.max) << " | " << sci(ss.max) << " | " << sci(ss.median) << " |\n";
@@ -223,7 +235,7 @@ void section_tradeoff(ReportContext& ctx, const std::vector<Point>& uniform, con
 void section_materials(ReportContext& ctx) {
   auto& md = *ctx.markdown;
   gen::GenerateContext gctx;
-  std::vector<gen::GhsMaterial> mats;
+  std::vector<fam::Material> mats;
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   for (int i = 0; i < 8; ++i) mats.push_back({"m" + std::to_string(i), 1e-2 * std::pow(1e5, U(rng)), 1 + 9 * U(rng)});
@@ -231,20 +243,18 @@ void section_materials(ReportContext& ctx) {
   std::size_t bytes = 0;
   double worst_gen = 0, worst = 0;
   for (const auto& m : mats) {
-    const gen::BuiltTable bt =
-        gen::build_ghs_sigma_rel_material(m, 0.0, 1.0, 257, lookup::kGhsSigmaRelDefaultWScale, lookup::Storage::float64, gctx);
+    const gen::BuiltTable bt = fam::build_material(m, fam::Config{}, gctx);
     bytes += bt.dataset.table.bytes();
     worst_gen = std::max(worst_gen, bt.summary.max_rel_error);
-    const lookup::GhsSigmaRelMaterial lm(bt.dataset.table, m.B, lookup::kGhsSigmaRelDefaultWScale);
+    const lookup::GhsSigmaRelMaterial lm(bt.dataset.table, m.B, schema::ghs_sigma_rel::kDefaultWScale);
     for (int k = 0; k < 500; ++k) {
       const double s = (k % 2) ? U(rng) : 1 - std::pow(1e-12, U(rng));
       worst = std::max(worst, std::abs(lm(s) / numerics::ghs_sigma_rel2(m.B, m.c, s) - 1));
     }
   }
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  gen::GhsSigmaRelGrid g;
   const auto t1 = std::chrono::steady_clock::now();
-  const gen::BuiltTable grid = gen::build_ghs_sigma_rel_grid(g, gctx);
+  const gen::BuiltTable grid = fam::build_grid(fam::Config{}, gctx);
   const double sec_grid = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   md << "### Per-material tables (manifest form with \"materials\")\n\n"
      << "| what | size | time (incl. error measurement and checks) | max rel error |\n|---|---|---|---|\n"
@@ -311,7 +321,7 @@ void section_sampling(ReportContext& ctx) {
 
 }  // namespace
 
-void validate_ghs_sigma_rel(ReportContext& ctx) {
+void report(ReportContext& ctx) {
   auto& md = *ctx.markdown;
   md << "## ghs_sigma_rel (GHS renormalization sigma_rel^2, Holzschuch & Pacanowski Eq. 25)\n\n";
   section_exact(ctx);
@@ -324,4 +334,4 @@ void validate_ghs_sigma_rel(ReportContext& ctx) {
   section_sampling(ctx);
 }
 
-}  // namespace brdftab::validate
+}  // namespace brdftab::validate::ghs_sigma_rel

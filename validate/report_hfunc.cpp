@@ -16,6 +16,7 @@
 
 
 #include "generators/hfunc.hpp"
+#include "lookup/hfunc_schema.hpp"
 #include "lookup/table.hpp"
 #include "lookup/table_file.hpp"
 #include "lookup/table_set.hpp"
@@ -26,13 +27,13 @@
 #include "numerics/hfunction_nystrom.hpp"
 #include "validate/report.hpp"
 
-namespace brdftab::validate {
+namespace brdftab::validate::hfunc {
 
 namespace {
 
 using numerics::FokHRow;
 using numerics::HKind;
-const HKind kKinds[] = {HKind::isotropic, HKind::ls0, HKind::ls1, HKind::ls2};
+using schema::hfunc::kKinds;
 
 std::string sci(double v, int digits = 2) {
   char buf[40];
@@ -234,9 +235,25 @@ double random_point_error(const lookup::Table& t, HKind kind, int rows, int per_
   return w;
 }
 
+// An in-memory table over [0, 1]^2: with the family's mu^(1/4) axis it is the family's own
+// table (gen::hfunc::build from a Config); with another mu transform it is a rejected
+// alternative, built here only to show why.
 lookup::Table memory_table(HKind kind, int nc, int nm, lookup::Transform mu_transform, lookup::Storage storage,
                            lookup::Interpolation interp = lookup::Interpolation::cubic) {
-  const std::vector<lookup::Axis> axes = {lookup::make_axis("c", gen::kHfuncCTransform, 0.0, 1.0, nc),
+  if (mu_transform == schema::hfunc::kMu.transform) {
+    gen::hfunc::Config c;
+    const bool compact = storage == lookup::Storage::float32;
+    c.kinds = {kind};
+    c.do_compact = compact;
+    c.do_precise = !compact;
+    (compact ? c.compact : c.precise) = {1.0 / (nc - 1), 1.0 / (nm - 1)};
+    c.compact_linear.clear();
+    if (interp == lookup::Interpolation::linear) c.compact_linear = {kind};
+    c.error_rows = 1;
+    c.error_per_row = 1;
+    return gen::hfunc::build(c, gen::GenerateContext{}).at(0).dataset.table;
+  }
+  const std::vector<lookup::Axis> axes = {lookup::make_axis("c", schema::hfunc::kC.transform, 0.0, 1.0, nc),
                                           lookup::make_axis("mu", mu_transform, 0.0, 1.0, nm)};
   std::vector<double> v(static_cast<std::size_t>(nc) * nm);
 #pragma omp parallel for schedule(dynamic)
@@ -250,7 +267,7 @@ lookup::Table memory_table(HKind kind, int nc, int nm, lookup::Transform mu_tran
 void tables_section(ReportContext& ctx) {
   auto& md = *ctx.markdown;
   md << "### Tables\n\n";
-  md << "Committed tables (" << gen::kHfuncFile << "), max relative error at 300 x 300 random points (c uniform, "
+  md << "Committed tables (" << schema::hfunc::kFile << "), max relative error at 300 x 300 random points (c uniform, "
         "uniform in sqrt(1-c), 1-c log-uniform down to 1e-12; mu uniform, uniform in sqrt(mu), log-uniform down "
         "to 1e-14), against the error the generator stored:\n\n"
         "| dataset | shape | storage | interpolation | bytes | max rel error (here) | max_rel_error attribute |\n"
@@ -258,9 +275,9 @@ void tables_section(ReportContext& ctx) {
   std::vector<std::vector<double>> csv;
   for (HKind kind : kKinds)
     for (bool compact : {false, true}) {
-      const std::string ds = gen::hfunc_dataset(kind, compact);
+      const std::string ds(schema::hfunc::dataset(kind, compact).name);
       try {
-        const auto& loaded = ctx.tables->get(gen::kHfuncFile, ds);
+        const auto& loaded = ctx.tables->get(std::string(schema::hfunc::kFile), ds);
         const lookup::Table& t = loaded.table;
         const double e = random_point_error(t, kind, 300, 300, 777);
         const double stored = loaded.info.attribute_number("max_rel_error", NAN);
@@ -330,7 +347,7 @@ void moments_section(ReportContext& ctx) {
 
 }  // namespace
 
-void validate_hfunc(ReportContext& ctx) {
+void report(ReportContext& ctx) {
   auto& md = *ctx.markdown;
   md << "## hfunc (Chandrasekhar H-functions, d'Eon section 3.1)\n\n";
   const auto t0 = std::chrono::steady_clock::now();
@@ -343,4 +360,4 @@ void validate_hfunc(ReportContext& ctx) {
      << fix(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 1) << " s)\n\n";
 }
 
-}  // namespace brdftab::validate
+}  // namespace brdftab::validate::hfunc

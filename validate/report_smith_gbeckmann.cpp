@@ -13,13 +13,14 @@
 #include <vector>
 
 #include "generators/smith_gbeckmann.hpp"
-#include "lookup/smith_gbeckmann_g1.hpp"
+#include "lookup/smith_gbeckmann_schema.hpp"
+#include "lookup/smith_gbeckmann.hpp"
 #include "lookup/table_set.hpp"
 #include "numerics/smith_beckmann_closed_form.hpp"
 #include "numerics/smith_gbeckmann_lambda.hpp"
 #include "validate/report.hpp"
 
-namespace brdftab::validate {
+namespace brdftab::validate::smith_gbeckmann {
 
 namespace {
 
@@ -49,20 +50,34 @@ std::vector<Sample> random_samples(int n, unsigned seed) {
   return s;
 }
 
-// An in-memory G1 table on (p, x) where x = b (scaled) or x = a (unscaled), axis x/(k+x).
+// An in-memory G1 table on (p, x), axis x/(k+x): x = b = a M1(p) is the family's own
+// table (built by gen::smith_gbeckmann::build from a Config); x = a is the rejected
+// alternative (no M1 scaling), built here only to show why.
 lookup::Table build_table(int n_p, int n_x, double k, bool scaled, lookup::Storage storage,
                           lookup::Interpolation interp) {
+  if (scaled) {
+    namespace fam = gen::smith_gbeckmann;
+    fam::Config c;
+    const bool compact = storage == lookup::Storage::float32;
+    c.compact = compact;
+    c.precise = !compact;
+    c.b_scale = k;
+    (compact ? c.compact_log_p_step : c.precise_log_p_step) = std::log(16.0) / (n_p - 1);
+    (compact ? c.compact_b_points : c.precise_b_points) = n_x;
+    c.compact_interpolation = interp;
+    c.error_rows = 1;
+    c.error_per_row = 1;
+    return fam::build(c, gen::GenerateContext{}).at(0).dataset.table;
+  }
   std::vector<lookup::Axis> axes = {lookup::make_axis("p", lookup::Transform::log, 0.25, 4.0, n_p),
-                                    lookup::make_axis(scaled ? "b" : "a", lookup::Transform::x_over_k_plus_x, 0.0,
-                                                      INFINITY, n_x, k)};
+                                    lookup::make_axis("a", lookup::Transform::x_over_k_plus_x, 0.0, INFINITY, n_x, k)};
   std::vector<double> v(static_cast<std::size_t>(n_p) * n_x);
 #pragma omp parallel for schedule(dynamic)
   for (int i = 0; i < n_p; ++i) {
     const double p = axes[0].value(i);
-    const double m1 = scaled ? numerics::gbeckmann_first_moment(p) : 1.0;
     for (int j = 0; j < n_x; ++j) {
       const double x = axes[1].value(j);
-      v[static_cast<std::size_t>(i) * n_x + j] = std::isinf(x) ? 0.0 : numerics::smith_gbeckmann_g1(x / m1, p);
+      v[static_cast<std::size_t>(i) * n_x + j] = std::isinf(x) ? 0.0 : numerics::smith_gbeckmann_g1(x, p);
     }
   }
   return lookup::Table("G1", axes, v, storage, interp);
@@ -71,7 +86,7 @@ lookup::Table build_table(int n_p, int n_x, double k, bool scaled, lookup::Stora
 double max_error(const lookup::Table& t, bool scaled, const std::vector<Sample>& s) {
   double worst = 0;
   for (const auto& x : s) {
-    const double m1 = scaled ? lookup::smith_gbeckmann_a_scale(x.p) : 1.0;
+    const double m1 = scaled ? schema::smith_gbeckmann::first_moment(x.p) : 1.0;
     worst = std::max(worst, std::abs(t.eval2(x.p, x.a * m1) - x.g1));
   }
   return worst;
@@ -173,10 +188,11 @@ void tables_section(ReportContext& ctx) {
   auto& md = *ctx.markdown;
   const auto samples = random_samples(4000, 2024);
   // Committed tables: error maps on an off-grid map (cell centres) and random points.
-  for (const char* dataset : {gen::kSmithGBeckmannCompact, gen::kSmithGBeckmannPrecise}) {
+  for (const auto& ds : schema::smith_gbeckmann::kDatasets) {
+    const std::string dataset(ds.name);
     const lookup::Table* t = nullptr;
     try {
-      t = &ctx.tables->table(gen::kSmithGBeckmannFile, dataset);
+      t = &ctx.tables->table(std::string(schema::smith_gbeckmann::kFile), dataset);
     } catch (const std::exception& e) {
       md << "Table " << dataset << " not available: " << e.what() << "\n\n";
       continue;
@@ -191,7 +207,7 @@ void tables_section(ReportContext& ctx) {
       for (int j = 0; j < np; ++j) {
         const double lp = std::log10(0.25) + (j + 0.5) / np * std::log10(16.0);
         const double p = std::pow(10.0, lp);
-        const double exact = numerics::smith_gbeckmann_g1(b / numerics::gbeckmann_first_moment(p), p);
+        const double exact = numerics::smith_gbeckmann_g1(b / schema::smith_gbeckmann::first_moment(p), p);
         rows[static_cast<std::size_t>(i) * np + j] = {u, lp, std::max(std::abs(t->eval2(p, b) - exact), 1e-17)};
       }
     }
@@ -229,9 +245,9 @@ void tables_section(ReportContext& ctx) {
       {"(log p, b/(0.3+b))", 13, 50, 0.3, true, f32, cubic},
       {"(log p, b/(0.3+b))", 16, 64, 0.3, true, f32, cubic},
       {"(log p, b/(0.3+b))", 20, 80, 0.3, true, f32, cubic},
-      {"(log p, b/(0.3+b)) [G1_compact]", 25, 100, 0.3, true, f32, cubic},
+      {"(log p, b/(0.3+b)) [smith_gbeckmann_g1_compact]", 25, 100, 0.3, true, f32, cubic},
       {"(log p, b/(0.3+b))", 32, 160, 0.3, true, f64, cubic},
-      {"(log p, b/(0.3+b)) [G1_precise]", 64, 320, 0.3, true, f64, cubic},
+      {"(log p, b/(0.3+b)) [smith_gbeckmann_g1_precise]", 64, 320, 0.3, true, f64, cubic},
   };
   std::vector<std::vector<double>> csv;
   for (const auto& v : variants) {
@@ -250,7 +266,7 @@ void tables_section(ReportContext& ctx) {
 
 }  // namespace
 
-void validate_smith_gbeckmann(ReportContext& ctx) {
+void report(ReportContext& ctx) {
   auto& md = *ctx.markdown;
   md << "## smith_gbeckmann (Smith G1 of the generalized Beckmann NDF, Holzschuch & Pacanowski Eq. 38-42)\n\n";
   exact_numerics_section(ctx);
@@ -258,4 +274,4 @@ void validate_smith_gbeckmann(ReportContext& ctx) {
   tables_section(ctx);
 }
 
-}  // namespace brdftab::validate
+}  // namespace brdftab::validate::smith_gbeckmann

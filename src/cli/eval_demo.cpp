@@ -3,12 +3,13 @@
 #include <numbers>
 
 #include "cli/quantity.hpp"
-#include "generators/demo_family.hpp"
+#include "lookup/demo_schema.hpp"
 #include "lookup/table_set.hpp"
+#include "numerics/demo_exp_cos.hpp"
 
-namespace brdftab::cli {
+namespace brdftab::cli::demo {
 
-std::vector<Quantity> demo_quantities() {
+std::vector<Quantity> quantities() {
   Quantity q;
   q.name = "demo_exp_cos";
   q.description = "exp(-x) cos(y), the closed-form demonstration table";
@@ -16,12 +17,13 @@ std::vector<Quantity> demo_quantities() {
                   {"y", 0.0, std::numbers::pi / 2, false, false, false, "[0, pi/2]"}};
   q.outputs = {"value"};
   q.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
-    out[0] = gen::demo_exp_cos_exact(in[0], in[1]);
+    out[0] = numerics::demo_exp_cos(in[0], in[1]);
   };
   q.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
-    out[0] = ctx.tables->table("demo.h5", "demo_exp_cos").eval(in, lookup::OutOfDomain::error);
+    const auto& t = ctx.tables->table(std::string(schema::demo::kFile), std::string(schema::demo::kExpCos.name));
+    out[0] = t.eval(in, lookup::OutOfDomain::error);
   };
   return {q};
 }
 
-}  // namespace brdftab::cli
+}  // namespace brdftab::cli::demo

@@ -8,15 +8,15 @@
 #include <string>
 
 #include "cli/quantity.hpp"
-#include "generators/ghs_sigma_rel.hpp"
 #include "lookup/ghs_sigma_rel.hpp"
+#include "lookup/number_format.hpp"
 #include "lookup/table_set.hpp"
 #include "numerics/domain_check.hpp"
 #include "numerics/ghs_sigma_rel.hpp"
 
-namespace brdftab::cli {
+namespace brdftab::cli::ghs_sigma_rel {
 
-std::vector<Quantity> ghs_sigma_rel_quantities() {
+std::vector<Quantity> quantities() {
   Quantity q;
   q.name = "ghs_sigma_rel2";
   q.description =
@@ -30,23 +30,23 @@ std::vector<Quantity> ghs_sigma_rel_quantities() {
     out[0] = numerics::ghs_sigma_rel2(in[0], in[1], in[2]);
   };
   q.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
-    const lookup::LoadedTable& t = ctx.tables->get(gen::kGhsSigmaRelFile, gen::kGhsSigmaRelGrid);
-    const double w_scale = t.info.attribute_number("w_scale", lookup::kGhsSigmaRelDefaultWScale);
+    const lookup::GhsSigmaRelGrid grid(ctx.tables->get(std::string(schema::ghs_sigma_rel::kFile),
+                                                       std::string(schema::ghs_sigma_rel::kGrid.name)));
     const double B = in[0], c = in[1], s = in[2];
-    const lookup::Axis& aB = t.table.axis(0);
-    const lookup::Axis& aw = t.table.axis(1);
-    const lookup::Axis& ac = t.table.axis(2);
+    const lookup::Axis& aB = grid.table().axis(0);
+    const lookup::Axis& aw = grid.table().axis(1);
+    const lookup::Axis& ac = grid.table().axis(2);
     auto range = [](const lookup::Axis& a) {
-      return "[" + numerics::format_number(a.x_lo) + ", " + numerics::format_number(a.x_hi) + "] (table range)";
+      return "[" + lookup::format_number(a.x_lo) + ", " + lookup::format_number(a.x_hi) + "] (table range)";
     };
     if (!aB.contains(B)) numerics::throw_domain_error("B", B, range(aB));
     if (!ac.contains(c)) numerics::throw_domain_error("c", c, range(ac));
-    const double w = lookup::ghs_sigma_rel_w(B, s, w_scale);
+    const double w = schema::ghs_sigma_rel::w_of_s(B, s, grid.w_scale());
     if (!(w >= aw.x_lo - 1e-12 && w <= aw.x_hi + 1e-12))
       numerics::throw_domain_error("s", s, "covered by the table's w range " + range(aw));
-    out[0] = lookup::ghs_sigma_rel2_grid(t.table, B, c, s, w_scale);
+    out[0] = lookup::ghs_sigma_rel2(grid, B, c, s);
   };
   return {q};
 }
 
-}  // namespace brdftab::cli
+}  // namespace brdftab::cli::ghs_sigma_rel

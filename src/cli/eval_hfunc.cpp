@@ -1,7 +1,7 @@
 // `brdftab eval h_iso` (columns c, mu -> H) and `brdftab eval h_ls` (columns mode, c, mu -> H):
 // Chandrasekhar H-functions, isotropic and Lambertian-sphere pseudo-problems (d'Eon 3.1).
 //   exact: Fok integral (numerics/hfunction_fok.hpp), mu in [0, 1e20] or mu = inf.
-//   table: tables/hfunc.h5 (precise datasets H_iso, H_ls0, H_ls1, H_ls2), mu within the
+//   table: tables/hfunc.h5 (precise datasets hfunc_iso, hfunc_ls0, hfunc_ls1, hfunc_ls2), mu within the
 //          table's range (default [0, 1]).
 //   fit:   d'Eon Eq. 37 (mode 0) and Eq. 28-30 (mode 1, corrected, validate/ERRATA.md);
 //          no fit exists for mode 2 or the isotropic H-function.
@@ -13,13 +13,13 @@
 #include <stdexcept>
 
 #include "cli/quantity.hpp"
-#include "generators/hfunc.hpp"
+#include "lookup/hfunc_schema.hpp"
 #include "lookup/table_set.hpp"
 #include "numerics/domain_check.hpp"
 #include "numerics/hfunction_fit.hpp"
 #include "numerics/hfunction_fok.hpp"
 
-namespace brdftab::cli {
+namespace brdftab::cli::hfunc {
 
 namespace {
 
@@ -33,7 +33,10 @@ double exact_h(HKind kind, double c, double mu) {
 }
 
 double table_h(HKind kind, double c, double mu, const EvalContext& ctx) {
-  return ctx.tables->table(gen::kHfuncFile, gen::hfunc_dataset(kind, false)).eval2(c, mu, lookup::OutOfDomain::error);
+  const schema::DatasetSchema ds = schema::hfunc::dataset(kind, false);
+  const lookup::Table& t = ctx.tables->table(std::string(schema::hfunc::kFile), std::string(ds.name));
+  schema::check_table(t, ds);
+  return t.eval2(c, mu, lookup::OutOfDomain::error);
 }
 
 HKind ls_kind(double mode) { return mode == 0 ? HKind::ls0 : mode == 1 ? HKind::ls1 : HKind::ls2; }
@@ -44,7 +47,7 @@ Parameter mu_parameter() { return {"mu", 0.0, INFINITY, false, false, false, "[0
 
 }  // namespace
 
-std::vector<Quantity> hfunc_quantities() {
+std::vector<Quantity> quantities() {
   Quantity iso;
   iso.name = "h_iso";
   iso.description = "Chandrasekhar's isotropic H-function H(c, mu), Psi = c/2";
@@ -103,4 +106,4 @@ std::vector<Quantity> hfunc_quantities() {
   return {iso, ls, iso_m, ls_m};
 }
 
-}  // namespace brdftab::cli
+}  // namespace brdftab::cli::hfunc

@@ -1,20 +1,20 @@
 // `brdftab eval smith_gb`: Smith Lambda and G1 of the generalized Beckmann distribution
 // (Holzschuch & Pacanowski, Sec. 4.2, Eq. 41-42). Columns p, a -> Lambda, G1.
-//   exact: single-integral Lambda (numerics/smith_gbeckmann_lambda.hpp), p in [0.1, 10].
-//   table: G1 from tables/smith_gbeckmann.h5 (G1_precise), Lambda = 1/G1 - 1; p within the
-//          table's range (default [0.25, 4]).
+//   exact: single-integral Lambda (numerics/smith_gbeckmann_lambda.hpp), p in [0.1, 10];
+//          G1 = 1 / (1 + Lambda) from the same Lambda (one integral per row).
+//   table: G1 from tables/smith_gbeckmann.h5 (smith_gbeckmann_g1_precise), Lambda = 1/G1 - 1;
+//          p within the table's range (default [0.25, 4]).
 #include <cmath>
 #include <limits>
 
 #include "cli/quantity.hpp"
-#include "generators/smith_gbeckmann.hpp"
-#include "lookup/smith_gbeckmann_g1.hpp"
+#include "lookup/smith_gbeckmann.hpp"
 #include "lookup/table_set.hpp"
 #include "numerics/smith_gbeckmann_lambda.hpp"
 
-namespace brdftab::cli {
+namespace brdftab::cli::smith_gbeckmann {
 
-std::vector<Quantity> smith_gbeckmann_quantities() {
+std::vector<Quantity> quantities() {
   Quantity q;
   q.name = "smith_gb";
   q.description =
@@ -25,18 +25,19 @@ std::vector<Quantity> smith_gbeckmann_quantities() {
                   {"a", 0.0, INFINITY, false, false, false, "[0, inf]"}};
   q.outputs = {"Lambda", "G1"};
   q.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
-    out[0] = numerics::smith_gbeckmann_lambda(in[1], in[0]);
-    out[1] = numerics::smith_gbeckmann_g1(in[1], in[0]);
+    const double lambda = numerics::smith_gbeckmann_lambda(in[1], in[0]);
+    out[0] = lambda;
+    out[1] = 1.0 / (1.0 + lambda);  // Lambda = +inf (a = inf) gives G1 = 0
   };
   q.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
-    const lookup::Table& t = ctx.tables->table(gen::kSmithGBeckmannFile, gen::kSmithGBeckmannPrecise);
+    const lookup::SmithGBeckmannTable t(ctx.tables->table(std::string(schema::smith_gbeckmann::kFile),
+                                                          std::string(schema::smith_gbeckmann::kG1Precise.name)));
     const double p = in[0], a = in[1];
-    const double g1 = lookup::smith_gbeckmann_g1(t, a, p, lookup::smith_gbeckmann_a_scale(p),
-                                                 lookup::OutOfDomain::error);
+    const double g1 = lookup::smith_gbeckmann_g1(t, a, p, lookup::OutOfDomain::error);
     out[1] = g1;
     out[0] = g1 > 0.0 ? 1.0 / g1 - 1.0 : std::numeric_limits<double>::infinity();
   };
   return {q};
 }
 
-}  // namespace brdftab::cli
+}  // namespace brdftab::cli::smith_gbeckmann

@@ -38,8 +38,16 @@ struct Quantity {
   std::map<std::string, Method> methods;  // keys among "exact", "table", "fit"
 };
 
-// All quantities (src/cli/quantity_registry.cpp); each family contributes a function
-// `std::vector<Quantity> <family>_quantities()` listed there.
+// All quantities (src/cli/quantity_registry.cpp): every family K of
+// generators/family_list.hpp contributes `std::vector<Quantity> cli::K::quantities()`
+// (src/cli/eval_K.cpp).
 const std::vector<Quantity>& all_quantities();
+
+struct FamilyQuantities {
+  std::string family;
+  std::vector<Quantity> quantities;
+};
+// The same, grouped by family, in family-list order.
+const std::vector<FamilyQuantities>& quantities_by_family();
 
 }  // namespace brdftab::cli

@@ -1,23 +1,29 @@
-// Every quantity `brdftab eval` knows, one line per family.
+// Every quantity `brdftab eval` knows, from generators/family_list.hpp.
 #include "cli/quantity.hpp"
+#include "generators/family_list.hpp"
 
 namespace brdftab::cli {
 
-std::vector<Quantity> demo_quantities();
-std::vector<Quantity> smith_gbeckmann_quantities();
-std::vector<Quantity> hfunc_quantities();
-std::vector<Quantity> ghs_sigma_rel_quantities();
+#define BRDFTAB_DECLARE(K) \
+  namespace K {            \
+  std::vector<Quantity> quantities(); \
+  }
+BRDFTAB_FAMILIES(BRDFTAB_DECLARE)
+#undef BRDFTAB_DECLARE
+
+const std::vector<FamilyQuantities>& quantities_by_family() {
+  static const std::vector<FamilyQuantities> families = {
+#define BRDFTAB_ADD(K) {#K, K::quantities()},
+      BRDFTAB_FAMILIES(BRDFTAB_ADD)
+#undef BRDFTAB_ADD
+  };
+  return families;
+}
 
 const std::vector<Quantity>& all_quantities() {
   static const std::vector<Quantity> quantities = [] {
     std::vector<Quantity> all;
-    auto add = [&](std::vector<Quantity> v) {
-      for (auto& q : v) all.push_back(std::move(q));
-    };
-    add(demo_quantities());
-    add(smith_gbeckmann_quantities());
-    add(hfunc_quantities());
-    add(ghs_sigma_rel_quantities());
+    for (const auto& f : quantities_by_family()) all.insert(all.end(), f.quantities.begin(), f.quantities.end());
     return all;
   }();
   return quantities;

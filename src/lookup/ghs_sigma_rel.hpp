@@ -1,57 +1,86 @@
 #pragma once
 // Runtime lookup of the GHS renormalization sigma_rel^2(B, c, s) (Holzschuch & Pacanowski,
-// Eq. 23-26 and Sec. 5.2.3) from tables/ghs_sigma_rel.h5. B = b/lambda, s = sin(theta_i).
+// Eq. 23-26 and Sec. 5.2.3) from tables/ghs_sigma_rel.h5; the datasets, axes and the
+// derived maps w(B, s) and F(1) are in lookup/ghs_sigma_rel_schema.hpp.
 //
-// The file holds either
-//  - the 3-D grid `sigma_rel2_grid`: R = sigma_rel^2 / F(1) on axes (B [log], w, c [log]),
-//    with F(1) = sigma_rel^2(B, c, 0) = 1 - (1 + B^2)^(-(c-1)/2) in closed form; R is
-//    smooth in c down to c = 1 (sigma_rel^2 and F(1) both vanish like c - 1), so the grid
-//    covers c = 1 itself;
-//  - or one 1-D table per material `sigma_rel2_material_<name>`: sigma_rel^2 itself on the
-//    w axis, for the material's fixed (B, c) (attributes `B`, `c`).
-// The s coordinate is w = log1p(K (1 - s)) / log1p(K), K = w_scale * B (attribute
-// `w_scale`, 8 by default): w = 1 at s = 0, w = 0 at s = 1. For large B, sigma_rel^2 falls
-// from ~1 to ~1/2 within 1 - s ~ 1/B; w spreads that layer over the axis while staying
-// ~linear in s for small B.
+//   const auto& loaded = tables.get("ghs_sigma_rel.h5", "ghs_sigma_rel2_grid");
+//   const brdftab::lookup::GhsSigmaRelGrid grid(loaded);          // checks schema and w_scale
+//   double v = ghs_sigma_rel2(grid, B, c, s);
+//   const brdftab::lookup::GhsSigmaRelMaterial gold(tables.get("ghs_sigma_rel.h5", "ghs_sigma_rel2_material_gold"));
+//   double v = ghs_sigma_rel2(gold, s);                          // per-material constants once
+// The exact value is numerics::ghs_sigma_rel2(B, c, s), same arguments.
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
+#include "lookup/ghs_sigma_rel_schema.hpp"
+#include "lookup/number_format.hpp"
 #include "lookup/table.hpp"
+#include "lookup/table_file.hpp"
 
 namespace brdftab::lookup {
 
-inline constexpr double kGhsSigmaRelDefaultWScale = 8.0;
-
-// The w coordinate of s for a given B (see above).
-inline double ghs_sigma_rel_w(double B, double s, double w_scale) {
-  const double K = w_scale * B;
-  return std::log1p(K * (1 - s)) / std::log1p(K);
+namespace detail {
+// A derived-axis parameter read from the file must be a finite positive number.
+inline double ghs_positive_attribute(const LoadedTable& t, const char* key) {
+  const auto it = t.info.attributes.find(key);
+  const double* v = it == t.info.attributes.end() ? nullptr : std::get_if<double>(&it->second);
+  if (!v) throw std::invalid_argument("table '" + t.table.name() + "': attribute '" + key + "' is missing or not a number");
+  if (!(std::isfinite(*v) && *v > 0))
+    throw std::invalid_argument("table '" + t.table.name() + "': attribute '" + key + "' = " + format_number(*v) +
+                                " is not a finite positive number");
+  return *v;
 }
-// Its inverse: s(w).
-inline double ghs_sigma_rel_s(double B, double w, double w_scale) {
-  const double K = w_scale * B;
-  const double s = 1 - std::expm1(w * std::log1p(K)) / K;
-  return s < 0 ? 0.0 : (s > 1 ? 1.0 : s);
-}
-// F(1) = sigma_rel^2(B, c, s = 0) = 1 - (1 + B^2)^(-(c-1)/2), without cancellation.
-inline double ghs_sigma_rel_normal(double B, double c) { return -std::expm1(-0.5 * (c - 1) * std::log1p(B * B)); }
+}  // namespace detail
 
-// sigma_rel^2 from the 3-D grid table.
-inline double ghs_sigma_rel2_grid(const Table& grid, double B, double c, double s, double w_scale,
-                                  OutOfDomain policy = OutOfDomain::clamp) {
-  const double x[3] = {B, ghs_sigma_rel_w(B, s, w_scale), c};
-  return grid.eval(x, policy) * ghs_sigma_rel_normal(B, c);
+// The 3-D grid, checked against the schema, with its w_scale.
+class GhsSigmaRelGrid {
+ public:
+  GhsSigmaRelGrid(const Table& t, double w_scale) : t_(&t), w_scale_(w_scale) {
+    schema::check_table(t, schema::ghs_sigma_rel::kGrid);
+    if (!(std::isfinite(w_scale) && w_scale > 0))
+      throw std::invalid_argument("GhsSigmaRelGrid: w_scale = " + format_number(w_scale) + " is not finite positive");
+  }
+  explicit GhsSigmaRelGrid(const LoadedTable& t) : GhsSigmaRelGrid(t.table, detail::ghs_positive_attribute(t, "w_scale")) {
+    schema::check_table(t.table, t.info.attribute_string("quantity"), schema::ghs_sigma_rel::kGrid);
+  }
+  const Table& table() const { return *t_; }
+  double w_scale() const { return w_scale_; }
+
+ private:
+  const Table* t_;
+  double w_scale_;
+};
+
+// sigma_rel^2 from the 3-D grid: R(B, w(B, s), c) * F(1).
+inline double ghs_sigma_rel2(const GhsSigmaRelGrid& g, double B, double c, double s,
+                             OutOfDomain policy = OutOfDomain::clamp) {
+  const double x[3] = {B, schema::ghs_sigma_rel::w_of_s(B, s, g.w_scale()), c};
+  return g.table().eval(x, policy) * schema::ghs_sigma_rel::normal_value(B, c);
 }
 
 // sigma_rel^2 of one material from its 1-D table: the per-material constants once.
 class GhsSigmaRelMaterial {
  public:
-  GhsSigmaRelMaterial(const Table& table, double B, double w_scale)
-      : table_(&table), K_(w_scale * B), inv_log1p_K_(1 / std::log1p(w_scale * B)) {}
+  GhsSigmaRelMaterial(const Table& t, double B, double w_scale)
+      : table_(&t), K_(w_scale * B), inv_log1p_K_(1 / std::log1p(w_scale * B)) {
+    schema::check_table(t, schema::ghs_sigma_rel::kMaterial);
+    if (!(std::isfinite(K_) && K_ > 0))
+      throw std::invalid_argument("GhsSigmaRelMaterial: B = " + format_number(B) + ", w_scale = " + format_number(w_scale) +
+                                  " do not give a finite positive K");
+  }
+  // B and w_scale from the file's attributes.
+  explicit GhsSigmaRelMaterial(const LoadedTable& t)
+      : GhsSigmaRelMaterial(t.table, detail::ghs_positive_attribute(t, "B"), detail::ghs_positive_attribute(t, "w_scale")) {
+    schema::check_table(t.table, t.info.attribute_string("quantity"), schema::ghs_sigma_rel::kMaterial);
+  }
   double operator()(double s) const { return table_->eval1(std::log1p(K_ * (1 - s)) * inv_log1p_K_); }
 
  private:
   const Table* table_;
   double K_, inv_log1p_K_;
 };
+
+inline double ghs_sigma_rel2(const GhsSigmaRelMaterial& m, double s) { return m(s); }
 
 }  // namespace brdftab::lookup

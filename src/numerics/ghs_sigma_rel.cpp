@@ -1,3 +1,4 @@
+#include "lookup/ghs_sigma_rel_schema.hpp"
 #include "numerics/ghs_sigma_rel.hpp"
 
 #include <algorithm>
@@ -42,7 +43,7 @@ inline TauPoint tau_point(double tau, double B, double s, double eps) {
 double ghs_sigma_rel2_normal(double B, double c) {
   check_B(B);
   check_c(c);
-  return ghs_radial_cdf(B, c, 1.0);
+  return schema::ghs_sigma_rel::normal_value(B, c);  // the table family's F(1), defined once
 }
 
 GhsSigmaRelFixedBs::GhsSigmaRelFixedBs(double B, double s) {

@@ -7,16 +7,6 @@
 
 namespace brdftab::numerics {
 
-std::string_view h_kind_name(HKind kind) {
-  switch (kind) {
-    case HKind::isotropic: return "iso";
-    case HKind::ls0: return "ls0";
-    case HKind::ls1: return "ls1";
-    case HKind::ls2: return "ls2";
-  }
-  return "?";
-}
-
 HCharacteristic make_characteristic(HKind kind, double c) {
   require_closed("c", c, 0.0, 1.0, "[0, 1]");
   HCharacteristic ch;

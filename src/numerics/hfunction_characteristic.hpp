@@ -12,15 +12,18 @@
 #include <array>
 #include <string_view>
 
+#include "lookup/hfunc_schema.hpp"
+
 namespace brdftab::numerics {
 
 // Which H-function:
 //  isotropic: Psi = c/2 (isotropic scattering with single-scattering albedo c).
 //  ls0, ls1, ls2: the pseudo-problems of the three-term Lambertian-sphere phase
 //  function (d'Eon section 3.1, Psi^(0), Psi^(1), Psi^(2)).
-enum class HKind { isotropic, ls0, ls1, ls2 };
+// The kinds are the hfunc family's (lookup/hfunc_schema.hpp), defined once there.
+using HKind = schema::hfunc::Kind;
 
-std::string_view h_kind_name(HKind kind);  // "iso", "ls0", "ls1", "ls2"
+inline std::string_view h_kind_name(HKind kind) { return schema::hfunc::kind_name(kind); }  // "iso", "ls0", ...
 
 struct HCharacteristic {
   HKind kind = HKind::isotropic;

@@ -1,3 +1,4 @@
+#include "lookup/smith_gbeckmann_schema.hpp"
 #include "numerics/smith_gbeckmann_lambda.hpp"
 
 #include <cmath>
@@ -72,7 +73,7 @@ double gbeckmann_p2_printed(double r, double p) { return 0.5 * gbeckmann_p2(r, p
 
 double gbeckmann_first_moment(double p) {
   check_p(p);
-  return std::exp(boost::math::lgamma(1.5 / p) - boost::math::lgamma(1.0 / p)) / kPi;
+  return schema::smith_gbeckmann::first_moment(p);
 }
 
 double gbeckmann_p2_at_zero(double p) {

@@ -1,34 +1,35 @@
 #pragma once
-// Fast lookup of the H-function tables of tables/hfunc.h5 (H_iso, H_ls0, H_ls1, H_ls2 and
-// their _compact variants): the same interpolation as Table::eval (4-point Lagrange, or
-// bilinear for the linear compact tables), with the two axis transforms of the family (c on
-// sqrt(1-c), mu on mu^(1/4)) inlined instead of dispatched, and no span/policy overhead.
-// The stencils are the shared ones of lookup/interpolate.hpp.
-// Out-of-range input is clamped like OutOfDomain::clamp; NaN gives NaN.
+// Fast lookup of the H-function tables of tables/hfunc.h5 (hfunc_iso, hfunc_ls0, hfunc_ls1,
+// hfunc_ls2 and their _compact variants; schema in lookup/hfunc_schema.hpp): the same
+// interpolation as Table::eval (4-point Lagrange, or bilinear for the linear compact
+// tables), with the two axis transforms of the family (c on sqrt(1-c), mu on mu^(1/4))
+// inlined instead of dispatched, and no span/policy overhead. The stencils are the shared
+// ones of lookup/interpolate.hpp. Out-of-range input is clamped like OutOfDomain::clamp;
+// NaN gives NaN.
 //
-//   const auto& t = tables.table("hfunc.h5", "H_ls0_compact");
-//   const brdftab::lookup::HFunctionLookup<float> h(t);   // float for the float32 tables
+//   const auto& t = tables.table("hfunc.h5", "hfunc_ls0_compact");
+//   const brdftab::lookup::HfuncTable<float> h(t);   // float for the float32 tables
 //   double value = h(c, mu);
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
 
+#include "lookup/hfunc_schema.hpp"
 #include "lookup/table.hpp"
 
 namespace brdftab::lookup {
 
 template <class T>
-class HFunctionLookup {
+class HfuncTable {
  public:
-  // Throws std::invalid_argument unless `t` is a rank-2 table on axes (sqrt(1-x), x^(1/4))
-  // stored as T (float for float32, double for float64).
-  explicit HFunctionLookup(const Table& t) : linear_(t.interpolation() == Interpolation::linear) {
-    if (t.rank() != 2 ||
-        t.axis(0).transform != Transform::sqrt_one_minus || t.axis(1).transform != Transform::fourth_root ||
-        t.storage() != (sizeof(T) == 4 ? Storage::float32 : Storage::float64))
-      throw std::invalid_argument("HFunctionLookup: table '" + t.name() +
-                                  "' is not a (sqrt(1-c), mu^(1/4)) H-function table of this precision");
+  // Throws std::invalid_argument naming the mismatch unless `t` is an hfunc table (schema
+  // axes) stored as T (float for float32, double for float64).
+  explicit HfuncTable(const Table& t) : linear_(t.interpolation() == Interpolation::linear) {
+    schema::check_table(t, schema::hfunc::dataset(schema::hfunc::Kind::isotropic, false));
+    if (t.storage() != (sizeof(T) == 4 ? Storage::float32 : Storage::float64))
+      throw std::invalid_argument("HfuncTable: table '" + t.name() + "' is stored as " +
+                                  std::string(storage_name(t.storage())) + ", not as this lookup's precision");
     c_ = interp::AxisMap::from(t.axis(0));
     mu_ = interp::AxisMap::from(t.axis(1));
     values_.resize(static_cast<std::size_t>(c_.n) * mu_.n);

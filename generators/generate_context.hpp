@@ -1,0 +1,42 @@
+#pragma once
+// What a generator run is given (output folder, progress sink, error-measurement seed) and
+// what it reports per table.
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace brdftab::gen {
+
+// Progress of a long run: stage text and fraction done in [0, 1].
+class Progress {
+ public:
+  virtual ~Progress() = default;
+  virtual void update(const std::string& stage, double fraction) = 0;
+};
+
+struct GenerateContext {
+  std::filesystem::path out_dir;
+  Progress* progress = nullptr;  // may be null
+  // Mixed into every table's off-grid error-point seed: 0 reproduces the stored error;
+  // another value re-measures the error on a fresh point set (conformance test).
+  unsigned error_seed = 0;
+  void report(const std::string& stage, double fraction) const {
+    if (progress) progress->update(stage, fraction);
+  }
+};
+
+// One dataset a family wrote, with its cost and its measured accuracy.
+struct TableSummary {
+  std::string file;     // e.g. "hfunc.h5"
+  std::string dataset;  // e.g. "hfunc_iso"
+  std::vector<std::size_t> shape;
+  std::string storage;  // "float32" | "float64"
+  std::string interpolation;
+  std::size_t bytes = 0;  // bytes of values
+  double max_abs_error = 0, max_rel_error = 0;  // measured off-grid
+  std::size_t error_samples = 0;
+  double seconds = 0;  // fill + measurement
+};
+
+}  // namespace brdftab::gen

@@ -1,0 +1,49 @@
+#pragma once
+// Family schemas: what a table family's HDF5 file holds, declared once and shared by every
+// layer. The generator builds its axes from the schema, the runtime helpers check the
+// tables they are handed against it, and the conformance test checks every written file.
+//
+// One schema header per family, `lookup/<family>_schema.hpp`, namespace
+// brdftab::schema::<family>: the file name, the datasets (name, quantity, axes with their
+// transforms and units) and the derived-axis maps (functions that turn physical parameters
+// into axis coordinates, e.g. b = a M1(p)). Standard library only.
+#include <array>
+#include <string>
+#include <string_view>
+
+#include "lookup/axis.hpp"
+
+namespace brdftab::lookup {
+class Table;
+}
+
+namespace brdftab::schema {
+
+struct AxisSchema {
+  std::string_view name;
+  lookup::Transform transform = lookup::Transform::identity;
+  std::string_view units;
+};
+
+struct DatasetSchema {
+  // The dataset name; with per_material, the prefix that the material name follows
+  // (e.g. "ghs_sigma_rel2_material_" + "gold").
+  std::string_view name;
+  bool per_material = false;
+  // The `quantity` attribute (for per-material tables: its leading text).
+  std::string_view quantity;
+  int rank = 0;
+  std::array<AxisSchema, 4> axes{};
+
+  bool matches(std::string_view dataset) const {
+    return per_material ? dataset.size() > name.size() && dataset.substr(0, name.size()) == name : dataset == name;
+  }
+};
+
+// Throws std::invalid_argument naming the table and the first mismatch (rank, an axis'
+// name, transform or units) between `table` and `schema`.
+void check_table(const lookup::Table& table, const DatasetSchema& schema);
+// The same, and the `quantity` attribute as stored in the file.
+void check_table(const lookup::Table& table, std::string_view quantity, const DatasetSchema& schema);
+
+}  // namespace brdftab::schema
