@@ -14,6 +14,7 @@
 // and its schema in src/lookup/K_schema.hpp (namespace brdftab::schema::K, kFile, kDatasets).
 // generators/family_list.hpp lists the families; generators/registry.cpp instantiates them.
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,10 @@ class Family {
   // A cheap entry for tests, and the same with narrower ranges (must give smaller tables).
   virtual nlohmann::json test_entry() const = 0;
   virtual nlohmann::json narrowed_test_entry() const = 0;
+  // An entry as the family reads it (defaults filled in): to_json(read_config(entry)).
+  virtual nlohmann::json normalized(const nlohmann::json& entry) const = 0;
+  // The datasets its files may hold (lookup/<name>_schema.hpp).
+  virtual std::span<const schema::DatasetSchema> datasets() const = 0;
 };
 
 // The adapter: one instance per family key (registry.cpp).
@@ -51,6 +56,7 @@ struct FamilyParts {
   const char* name;
   const char* summary;
   std::string_view file;
+  std::span<const schema::DatasetSchema> datasets;
   Config (*read_config)(const nlohmann::json&);
   nlohmann::json (*to_json)(const Config&);
   std::vector<BuiltTable> (*build)(const Config&, const GenerateContext&);
@@ -72,6 +78,8 @@ class FamilyOf final : public Family {
   }
   nlohmann::json test_entry() const override { return p_.to_json(p_.test_config()); }
   nlohmann::json narrowed_test_entry() const override { return p_.to_json(p_.narrowed(p_.test_config())); }
+  nlohmann::json normalized(const nlohmann::json& entry) const override { return p_.to_json(p_.read_config(entry)); }
+  std::span<const schema::DatasetSchema> datasets() const override { return p_.datasets; }
 
  private:
   FamilyParts<Config> p_;
@@ -88,5 +96,5 @@ const Family* find_family(const std::string& name);
 #define BRDFTAB_DEFINE_FAMILY(K)                                                                         \
   std::unique_ptr<::brdftab::gen::Family> make_family() {                                                \
     return std::make_unique<::brdftab::gen::FamilyOf<Config>>(::brdftab::gen::FamilyParts<Config>{       \
-        #K, kSummary, ::brdftab::schema::K::kFile, &read_config, &to_json, &build, &test_config, &narrowed}); \
+        #K, kSummary, ::brdftab::schema::K::kFile, ::brdftab::schema::K::kDatasets, &read_config, &to_json, &build, &test_config, &narrowed}); \
   }
