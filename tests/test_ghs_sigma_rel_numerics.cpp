@@ -2,6 +2,7 @@
 // Eq. 23-26 with the K-correlation spread of Eq. 22/43), each checked against something
 // independent of the one-dimensional form (2) of numerics/ghs_sigma_rel.hpp: closed forms at
 // s = 0 and c = 3, the small-B series, the polar form in long double, a direct 2-D cubature.
+#include <numbers>
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -12,7 +13,7 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
-#include "numerics/ghs_gauss_rule.hpp"
+#include "numerics/gauss_legendre.hpp"
 #include "numerics/ghs_sigma_rel.hpp"
 #include "numerics/ghs_sigma_rel_polar.hpp"
 #include "numerics/ghs_spread.hpp"
@@ -20,7 +21,7 @@
 using namespace brdftab::numerics;
 
 namespace {
-constexpr double kPi = boost::math::constants::pi<double>();
+constexpr double kPi = std::numbers::pi;
 double rel_diff(double x, double ref) { return std::abs(x - ref) / std::abs(ref); }
 
 // 1 - (1 + B^2)^(-(c-1)/2) in long double by its own series in x = (c-1)/2 log(1 + B^2)

@@ -2,6 +2,7 @@
 // Eq. 60-61 invert the radial distribution of S restricted to r <= 1 + s (checked against
 // a CDF integrated numerically from S itself), and the per-sample factor phi_max / pi
 // (times M) makes the Monte Carlo estimator of sigma_rel^2 unbiased.
+#include <numbers>
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -17,7 +18,7 @@
 using namespace brdftab::numerics;
 
 namespace {
-constexpr double kPi = boost::math::constants::pi<double>();
+constexpr double kPi = std::numbers::pi;
 
 // int_0^r 2 pi t S(t) dt by adaptive quadrature of S (split at t = 1/B).
 double radial_mass(double B, double c, double r) {

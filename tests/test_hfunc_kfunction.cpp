@@ -1,5 +1,6 @@
 // K(t) of the Fok/Chandrasekhar representation (d'Eon Eq. 23-26): the closed forms and
 // the small-t series against the definition, integrated numerically.
+#include <numbers>
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -74,7 +75,7 @@ TEST_CASE("hfunc: K limits: K(0) at t -> 0, K -> 1 as t -> inf, K(inf) = 1") {
       CHECK(k_function(ch, INFINITY) == 1.0);
       // K(t) = 1 - pi Psi(0)/t + O(1/t^2) for large t
       const double t = 1e8;
-      CHECK((1.0 - k_function(ch, t)) * t == doctest::Approx(M_PI * ch.psi(0.0)).epsilon(1e-6));
+      CHECK((1.0 - k_function(ch, t)) * t == doctest::Approx(std::numbers::pi * ch.psi(0.0)).epsilon(1e-6));
     }
 }
 

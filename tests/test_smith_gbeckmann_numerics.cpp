@@ -2,6 +2,7 @@
 // (Holzschuch & Pacanowski, Sec. 3.2 Eq. 6-10, Sec. 4.2 Eq. 38-42), each checked against
 // something independent: the printed double integral, the Beckmann closed form (p = 1),
 // a Bessel-function form (p = 1/2), moment asymptotics, identities.
+#include <numbers>
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -22,7 +23,7 @@
 using namespace brdftab::numerics;
 
 namespace {
-constexpr double kPi = boost::math::constants::pi<double>();
+constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double rel_diff(double x, double ref) { return std::abs(x - ref) / std::abs(ref); }

@@ -1,5 +1,6 @@
 // Importance sampling of the generalized Beckmann NDF (Holzschuch & Pacanowski,
 // Sec. 4.5.3, Eq. 58-59, exponent corrected from c/2 to 1/(2p)).
+#include <numbers>
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -16,7 +17,7 @@
 using namespace brdftab::numerics;
 
 namespace {
-constexpr double kPi = boost::math::constants::pi<double>();
+constexpr double kPi = std::numbers::pi;
 
 // Kolmogorov-Smirnov statistic of samples against a CDF.
 template <class Cdf>

@@ -2,6 +2,7 @@
 // numerics at random points drawn differently from the generator's own measurement
 // (uniform in theta = atan(a) and in p, not in the axis coordinates), and the family's
 // manifest handling.
+#include <numbers>
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -57,7 +58,7 @@ TEST_CASE("smith_gbeckmann table: G1 = 1 at normal incidence, 0 at grazing, with
   const auto loaded = lookup::load_table(kTableFile, std::string(schema::smith_gbeckmann::kG1Precise.name));
   const lookup::SmithGBeckmannTable t(loaded.table);
   // M1 at p = 1 (Beckmann) in closed form: Gamma(3/2) / pi = 1 / (2 sqrt(pi)).
-  CHECK(schema::smith_gbeckmann::first_moment(1.0) == doctest::Approx(0.5 / std::sqrt(M_PI)).epsilon(1e-15));
+  CHECK(schema::smith_gbeckmann::first_moment(1.0) == doctest::Approx(0.5 / std::sqrt(std::numbers::pi)).epsilon(1e-15));
   for (double p : {0.25, 0.7, 1.0, 2.5, 4.0}) {
     const double m1 = schema::smith_gbeckmann::first_moment(p);
     CHECK(lookup::smith_gbeckmann_g1(t, 0.0, p, m1) == doctest::Approx(1.0).epsilon(1e-15));

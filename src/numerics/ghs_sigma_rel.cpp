@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "numerics/domain_check.hpp"
-#include "numerics/ghs_gauss_rule.hpp"
+#include "numerics/gauss_legendre.hpp"
 #include "numerics/ghs_spread.hpp"
 
 namespace brdftab::numerics {

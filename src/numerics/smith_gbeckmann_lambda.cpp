@@ -1,6 +1,7 @@
 #include "lookup/smith_gbeckmann_schema.hpp"
 #include "numerics/smith_gbeckmann_lambda.hpp"
 
+#include <numbers>
 #include <cmath>
 #include <limits>
 
@@ -14,7 +15,7 @@ namespace brdftab::numerics {
 
 namespace {
 
-constexpr double kPi = boost::math::constants::pi<double>();
+constexpr double kPi = std::numbers::pi;
 
 void check_p(double p) { require_closed("p", p, kGBeckmannPMin, kGBeckmannPMax, kGBeckmannPDomain); }
 

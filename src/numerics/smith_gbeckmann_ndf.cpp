@@ -1,5 +1,6 @@
 #include "numerics/smith_gbeckmann_ndf.hpp"
 
+#include <numbers>
 #include <cmath>
 #include <limits>
 
@@ -11,7 +12,7 @@
 namespace brdftab::numerics {
 
 namespace {
-constexpr double kPi = boost::math::constants::pi<double>();
+constexpr double kPi = std::numbers::pi;
 
 void check_beta_p(double beta, double p) {
   require_greater("beta", beta, 0.0, "(0, +inf)");

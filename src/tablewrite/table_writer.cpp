@@ -11,9 +11,7 @@
 #include "lookup/table_file.hpp"
 #include "tablewrite/temp_file.hpp"
 
-#ifndef BRDFTAB_SOURCE_COMMIT
-#define BRDFTAB_SOURCE_COMMIT "unknown"
-#endif
+#include "brdftab_source_commit.h"  // BRDFTAB_SOURCE_COMMIT, written at build time
 
 namespace brdftab::tablewrite {
 
