@@ -28,7 +28,7 @@ Config read_config(const nlohmann::json& entry) {
   EntryReader r(entry, "tables.smith_gbeckmann");
   Config c;
   std::tie(c.p_lo, c.p_hi) =
-      r.range("p_range", {c.p_lo, c.p_hi}, numerics::kGBeckmannPMin, numerics::kGBeckmannPMax);
+      r.range("p_range", {c.p_lo, c.p_hi}, numerics::kSmithGBeckmannPMin, numerics::kSmithGBeckmannPMax);
   c.b_scale = r.number("b_scale", c.b_scale, 1e-3, 1e3);
   c.compact_log_p_step = r.number("compact_log_p_step", c.compact_log_p_step, 1e-4, 10.0);
   c.precise_log_p_step = r.number("precise_log_p_step", c.precise_log_p_step, 1e-4, 10.0);

@@ -43,7 +43,7 @@ TEST_CASE("smith_gbeckmann: D is normalized (Eq. 38-39): hemisphere integral of 
       const auto f = [&](double tau) {
         const double t = std::atan(beta * tau);
         const double dtheta = beta / (1 + beta * beta * tau * tau);
-        return 2 * kPi * std::sin(t) * std::cos(t) * gbeckmann_ndf(t, beta, p) * dtheta;
+        return 2 * kPi * std::sin(t) * std::cos(t) * smith_gbeckmann_ndf(t, beta, p) * dtheta;
       };
       const double total = half_line(f, 1e-14);
       CAPTURE(beta);
@@ -57,25 +57,25 @@ TEST_CASE("smith_gbeckmann: P2 of Eq. 9 integrates to 1; the printed Eq. 40 to 1
   for (double p : {0.25, 0.5, 1.0, 2.0, 4.0}) {
     // Eq. 9 from P22 of Eq. 39 (beta = 1) directly, over the whole line, in the test.
     const auto p2_eq9 = [&](double r) {
-      const auto g = [&](double q) { return gbeckmann_p22(r * r + q * q, 1.0, p); };
+      const auto g = [&](double q) { return smith_gbeckmann_p22(r * r + q * q, 1.0, p); };
       return 2.0 * half_line(g);
     };
     for (double r : {0.0, 0.3, 1.0, 1.6}) {
       CAPTURE(p);
       CAPTURE(r);
-      CHECK(rel_diff(gbeckmann_p2(r, p), p2_eq9(r)) < 1e-13);
-      CHECK(rel_diff(gbeckmann_p2_printed(r, p), 0.5 * p2_eq9(r)) < 1e-13);
+      CHECK(rel_diff(smith_gbeckmann_p2(r, p), p2_eq9(r)) < 1e-13);
+      CHECK(rel_diff(smith_gbeckmann_p2_printed(r, p), 0.5 * p2_eq9(r)) < 1e-13);
     }
     const double mass = 2.0 * half_line([&](double r) { return p2_eq9(r); }, 1e-12);
     CHECK(std::abs(mass - 1.0) < 1e-10);
   }
   // p = 1: P2(r) = exp(-r^2) / sqrt(pi) in closed form.
-  for (double r : {0.0, 0.5, 2.0, 5.0}) CHECK(rel_diff(gbeckmann_p2(r, 1.0), std::exp(-r * r) / std::sqrt(kPi)) < 1e-14);
+  for (double r : {0.0, 0.5, 2.0, 5.0}) CHECK(rel_diff(smith_gbeckmann_p2(r, 1.0), std::exp(-r * r) / std::sqrt(kPi)) < 1e-14);
   // Closed-form moments against quadrature of P2.
   for (double p : {0.25, 1.0, 3.0}) {
-    const double m1 = half_line([&](double r) { return r * gbeckmann_p2(r, p); }, 1e-12);
-    CHECK(rel_diff(gbeckmann_first_moment(p), m1) < 1e-10);
-    CHECK(rel_diff(gbeckmann_p2_at_zero(p), gbeckmann_p2(0.0, p)) < 1e-13);
+    const double m1 = half_line([&](double r) { return r * smith_gbeckmann_p2(r, p); }, 1e-12);
+    CHECK(rel_diff(smith_gbeckmann_first_moment(p), m1) < 1e-10);
+    CHECK(rel_diff(smith_gbeckmann_p2_at_zero(p), smith_gbeckmann_p2(0.0, p)) < 1e-13);
   }
 }
 
@@ -150,7 +150,7 @@ TEST_CASE("smith_gbeckmann: grazing asymptotics M1 a - 1/2 + P2(0)/(2a)") {
   // continuity across the switch to the expansion at a = 1e5.
   for (double p : {0.1, 0.25, 0.5, 1.0, 4.0, 10.0}) {
     for (double a : {1e3, 1e4}) {
-      const double asym = a * gbeckmann_first_moment(p) - 0.5 + 0.5 * gbeckmann_p2_at_zero(p) / a;
+      const double asym = a * smith_gbeckmann_first_moment(p) - 0.5 + 0.5 * smith_gbeckmann_p2_at_zero(p) / a;
       CAPTURE(p);
       CAPTURE(a);
       CHECK(rel_diff(smith_gbeckmann_lambda(a, p), asym) < 1e-12);
@@ -177,7 +177,7 @@ TEST_CASE("smith_gbeckmann: normal incidence asymptotics (Laplace) as a -> 0") {
 }
 
 TEST_CASE("smith_gbeckmann: stress: no NaN/Inf, 0 <= G1 <= 1, G1 non-increasing in a") {
-  for (double p : {kGBeckmannPMin, 0.25, 0.5, 1.0, 4.0, kGBeckmannPMax}) {
+  for (double p : {kSmithGBeckmannPMin, 0.25, 0.5, 1.0, 4.0, kSmithGBeckmannPMax}) {
     double previous = 1.0;
     std::vector<double> as = {0.0, 1e-300, 1e-100, 1e-20};
     for (double a = 1e-4; a < 1e12; a *= 1.3) as.push_back(a);
@@ -189,7 +189,7 @@ TEST_CASE("smith_gbeckmann: stress: no NaN/Inf, 0 <= G1 <= 1, G1 non-increasing 
       CAPTURE(a);
       CHECK(!std::isnan(lambda));
       // Lambda >= M1 a - 1/2 exceeds the double range only when M1 a does.
-      CHECK((std::isfinite(lambda) || a * gbeckmann_first_moment(p) > std::numeric_limits<double>::max()));
+      CHECK((std::isfinite(lambda) || a * smith_gbeckmann_first_moment(p) > std::numeric_limits<double>::max()));
       CHECK(lambda >= 0.0);
       CHECK(std::isfinite(g1));
       CHECK(g1 >= 0.0);
@@ -216,6 +216,6 @@ TEST_CASE("smith_gbeckmann: bad input is rejected with the parameter, value and 
   CHECK(message([] { smith_gbeckmann_lambda(1.0, 0.0); }).find("p = 0 is outside the valid domain [0.1, 10]") !=
         std::string::npos);
   CHECK(message([] { smith_gbeckmann_g1(1.0, std::nan("")); }).find("p = nan") != std::string::npos);
-  CHECK(message([] { gbeckmann_ndf(0.1, -1.0, 1.0); }).find("beta = -1") != std::string::npos);
-  CHECK(message([] { gbeckmann_sample_tan_theta(1.5, 1.0, 1.0); }).find("u = 1.5") != std::string::npos);
+  CHECK(message([] { smith_gbeckmann_ndf(0.1, -1.0, 1.0); }).find("beta = -1") != std::string::npos);
+  CHECK(message([] { smith_gbeckmann_sample_tan_theta(1.5, 1.0, 1.0); }).find("u = 1.5") != std::string::npos);
 }

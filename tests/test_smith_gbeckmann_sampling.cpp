@@ -42,13 +42,13 @@ TEST_CASE("smith_gbeckmann sampling: the tan^2 CDF equals the integral of D cos 
       for (double m : {0.3, 1.0, 2.0}) {
         const double theta0 = std::atan(m * beta);
         const double cap = boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
-            [&](double t) { return 2 * kPi * std::sin(t) * std::cos(t) * gbeckmann_ndf(t, beta, p); }, 0.0, theta0,
+            [&](double t) { return 2 * kPi * std::sin(t) * std::cos(t) * smith_gbeckmann_ndf(t, beta, p); }, 0.0, theta0,
             12, 1e-13);
         const double x0 = std::tan(theta0) * std::tan(theta0);
         CAPTURE(beta);
         CAPTURE(p);
         CAPTURE(m);
-        CHECK(std::abs(gbeckmann_tan2_cdf(x0, beta, p) - cap) < 1e-13);
+        CHECK(std::abs(smith_gbeckmann_tan2_cdf(x0, beta, p) - cap) < 1e-13);
       }
     }
   }
@@ -62,14 +62,14 @@ TEST_CASE("smith_gbeckmann sampling: corrected Eq. 59 passes Kolmogorov-Smirnov;
       std::vector<double> x(kSamples), x_printed(kSamples);
       for (int i = 0; i < kSamples; ++i) {
         const double u = uniform(rng);
-        const double t = gbeckmann_sample_tan_theta(u, beta, p);
+        const double t = smith_gbeckmann_sample_tan_theta(u, beta, p);
         x[i] = t * t;
         // The printed exponent c/2 with the only c that is not the diffraction falloff
         // at hand, c = 1 (i.e. ignoring p): tan = beta * y^{1/2}.
         const double y = boost::math::gamma_q_inv(1.0 / p, u);
         x_printed[i] = beta * beta * y;
       }
-      const auto cdf = [&](double v) { return gbeckmann_tan2_cdf(v, beta, p); };
+      const auto cdf = [&](double v) { return smith_gbeckmann_tan2_cdf(v, beta, p); };
       CAPTURE(beta);
       CAPTURE(p);
       CHECK(ks_statistic(x, cdf) < kKsCritical);
@@ -79,14 +79,14 @@ TEST_CASE("smith_gbeckmann sampling: corrected Eq. 59 passes Kolmogorov-Smirnov;
 }
 
 TEST_CASE("smith_gbeckmann sampling: half vectors have azimuth 2 pi u1 and pdf D cos") {
-  const auto h = gbeckmann_sample_half_vector(0.25, 0.5, 0.3, 2.0);
+  const auto h = smith_gbeckmann_sample_half_vector(0.25, 0.5, 0.3, 2.0);
   CHECK(h.phi == doctest::Approx(kPi / 2).epsilon(1e-15));
-  CHECK(h.pdf == doctest::Approx(gbeckmann_ndf(h.theta, 0.3, 2.0) * std::cos(h.theta)).epsilon(1e-15));
+  CHECK(h.pdf == doctest::Approx(smith_gbeckmann_ndf(h.theta, 0.3, 2.0) * std::cos(h.theta)).epsilon(1e-15));
   // The median of tan^2 theta: CDF(x(u = 1/2)) = 1/2.
   for (double p : {0.25, 1.0, 4.0}) {
-    const double t = gbeckmann_sample_tan_theta(0.5, 0.3, p);
-    CHECK(std::abs(gbeckmann_tan2_cdf(t * t, 0.3, p) - 0.5) < 1e-13);
+    const double t = smith_gbeckmann_sample_tan_theta(0.5, 0.3, p);
+    CHECK(std::abs(smith_gbeckmann_tan2_cdf(t * t, 0.3, p) - 0.5) < 1e-13);
   }
-  CHECK(gbeckmann_sample_tan_theta(1.0, 0.3, 2.0) == 0.0);
-  CHECK(std::isinf(gbeckmann_sample_tan_theta(0.0, 0.3, 2.0)));
+  CHECK(smith_gbeckmann_sample_tan_theta(1.0, 0.3, 2.0) == 0.0);
+  CHECK(std::isinf(smith_gbeckmann_sample_tan_theta(0.0, 0.3, 2.0)));
 }

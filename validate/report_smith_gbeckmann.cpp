@@ -137,9 +137,9 @@ void curves_section(ReportContext& ctx) {
     r.push_back(1 / (1 + numerics::beckmann_lambda(a)));
     rows.push_back(r);
   }
-  write_csv(ctx.report_dir / "smith_gb_g1_vs_a.csv",
+  write_csv(ctx.report_dir / "smith_gbeckmann_g1_vs_a.csv",
             {"a", "G1_p0.25", "G1_p0.5", "G1_p1", "G1_p2", "G1_p4", "G1_beckmann_closed_form"}, rows);
-  plot_lines(ctx.report_dir / "smith_gb_g1_vs_a.png", ctx.report_dir / "smith_gb_g1_vs_a.csv", 1, {2, 3, 4, 5, 6, 7},
+  plot_lines(ctx.report_dir / "smith_gbeckmann_g1_vs_a.png", ctx.report_dir / "smith_gbeckmann_g1_vs_a.csv", 1, {2, 3, 4, 5, 6, 7},
              "Smith G1, generalized Beckmann", "a = beta tan(theta)", "G1", true, false);
   const std::vector<double> as = {0.03, 0.1, 0.3, 1.0, 3.0};
   rows.clear();
@@ -148,15 +148,15 @@ void curves_section(ReportContext& ctx) {
     for (double a : as) r.push_back(numerics::smith_gbeckmann_g1(a, p));
     rows.push_back(r);
   }
-  write_csv(ctx.report_dir / "smith_gb_g1_vs_p.csv", {"p", "G1_a0.03", "G1_a0.1", "G1_a0.3", "G1_a1", "G1_a3"}, rows);
-  plot_lines(ctx.report_dir / "smith_gb_g1_vs_p.png", ctx.report_dir / "smith_gb_g1_vs_p.csv", 1, {2, 3, 4, 5, 6},
+  write_csv(ctx.report_dir / "smith_gbeckmann_g1_vs_p.csv", {"p", "G1_a0.03", "G1_a0.1", "G1_a0.3", "G1_a1", "G1_a3"}, rows);
+  plot_lines(ctx.report_dir / "smith_gbeckmann_g1_vs_p.png", ctx.report_dir / "smith_gbeckmann_g1_vs_p.csv", 1, {2, 3, 4, 5, 6},
              "Smith G1 against the kurtosis p", "p", "G1", true, false);
-  md << "![G1 vs a](smith_gb_g1_vs_a.png)\n\n![G1 vs p](smith_gb_g1_vs_p.png)\n\n";
+  md << "![G1 vs a](smith_gbeckmann_g1_vs_a.png)\n\n![G1 vs p](smith_gbeckmann_g1_vs_p.png)\n\n";
 
   // Gap to the Beckmann closed form as p leaves 1: at equal a, and at equal b = a M1(p)
   // (the same grazing slope Lambda ~ b - 1/2).
   rows.clear();
-  const double m1_beck = numerics::gbeckmann_first_moment(1.0);
+  const double m1_beck = numerics::smith_gbeckmann_first_moment(1.0);
   std::vector<double> thetas;
   for (int i = 1; i < 400; ++i) thetas.push_back(kHalfPi * i / 400.0);
   std::vector<double> p_grid;
@@ -164,7 +164,7 @@ void curves_section(ReportContext& ctx) {
   rows.resize(p_grid.size());
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t k = 0; k < p_grid.size(); ++k) {
-    const double p = p_grid[k], m1 = numerics::gbeckmann_first_moment(p);
+    const double p = p_grid[k], m1 = numerics::smith_gbeckmann_first_moment(p);
     double gap_a = 0, gap_b = 0;
     for (double t : thetas) {
       const double a = std::tan(t);
@@ -174,14 +174,14 @@ void curves_section(ReportContext& ctx) {
     }
     rows[k] = {p, std::max(gap_a, 1e-17), std::max(gap_b, 1e-17)};
   }
-  write_csv(ctx.report_dir / "smith_gb_gap_to_beckmann.csv", {"p", "max_gap_same_a", "max_gap_same_b"}, rows);
-  plot_lines(ctx.report_dir / "smith_gb_gap_to_beckmann.png", ctx.report_dir / "smith_gb_gap_to_beckmann.csv", 1,
+  write_csv(ctx.report_dir / "smith_gbeckmann_gap_to_beckmann.csv", {"p", "max_gap_same_a", "max_gap_same_b"}, rows);
+  plot_lines(ctx.report_dir / "smith_gbeckmann_gap_to_beckmann.png", ctx.report_dir / "smith_gbeckmann_gap_to_beckmann.csv", 1,
              {2, 3}, "max over theta of |G1_genBeckmann(p) - G1_Beckmann|", "p", "max abs gap", true, true);
   md << "Gap to the Beckmann closed form (max over a = tan(theta), theta in (0, pi/2)): at the same a, and at "
         "the same grazing slope b = a M1(p):\n\n| p | same a | same b |\n|---|---|---|\n";
   for (std::size_t k = 0; k < rows.size(); k += 8)  // half octaves
     md << "| " << rows[k][0] << " | " << sci(rows[k][1]) << " | " << sci(rows[k][2]) << " |\n";
-  md << "\n![gap](smith_gb_gap_to_beckmann.png)\n\n";
+  md << "\n![gap](smith_gbeckmann_gap_to_beckmann.png)\n\n";
 }
 
 void tables_section(ReportContext& ctx) {
@@ -213,7 +213,7 @@ void tables_section(ReportContext& ctx) {
     }
     double map_max = 0;
     for (const auto& r : rows) map_max = std::max(map_max, r[2]);
-    const std::string stem = std::string("smith_gb_error_") + dataset;
+    const std::string stem = std::string("smith_gbeckmann_error_") + dataset;
     write_csv(ctx.report_dir / (stem + ".csv"), {"b_over_k_plus_b", "log10_p", "abs_error_G1"}, rows);
     plot_heatmap(ctx.report_dir / (stem + ".png"), ctx.report_dir / (stem + ".csv"),
                  std::string("smith_gbeckmann ") + dataset + ": |table - exact G1|", "b/(k+b), b = a M1(p)",
@@ -257,7 +257,7 @@ void tables_section(ReportContext& ctx) {
     md << "| " << v.axes << " | " << v.n_p << " x " << v.n_x << " | " << lookup::storage_name(v.storage) << " | "
        << t.bytes() << " | " << sci(e) << " |\n";
   }
-  write_csv(ctx.report_dir / "smith_gb_resolution.csv", {"n_p", "n_a_or_b", "bytes", "scaled_b_axis", "k", "max_abs_error"},
+  write_csv(ctx.report_dir / "smith_gbeckmann_resolution.csv", {"n_p", "n_a_or_b", "bytes", "scaled_b_axis", "k", "max_abs_error"},
             csv);
   md << "\nFor scale: the public BBM generator of this table ships 100 x 1000 float32 (400 KB) on (p, a) axes, "
         "built with a midpoint rule; its bilinear lookup is off by up to 1.8e-3 in G1 at random points inside its "

@@ -20,8 +20,8 @@ std::vector<Quantity> quantities() {
   q.description =
       "Smith Lambda and G1 = 1/(1+Lambda) of the generalized Beckmann NDF, a = beta tan(theta) "
       "(Holzschuch & Pacanowski Eq. 41-42)";
-  q.parameters = {{"p", numerics::kGBeckmannPMin, numerics::kGBeckmannPMax, false, false, false,
-                   numerics::kGBeckmannPDomain},
+  q.parameters = {{"p", numerics::kSmithGBeckmannPMin, numerics::kSmithGBeckmannPMax, false, false, false,
+                   numerics::kSmithGBeckmannPDomain},
                   {"a", 0.0, INFINITY, false, false, false, "[0, inf]"}};
   q.outputs = {"Lambda", "G1"};
   q.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {

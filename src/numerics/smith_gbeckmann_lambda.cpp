@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-void check_p(double p) { require_closed("p", p, kGBeckmannPMin, kGBeckmannPMax, kGBeckmannPDomain); }
+void check_p(double p) { require_closed("p", p, kSmithGBeckmannPMin, kSmithGBeckmannPMax, kSmithGBeckmannPDomain); }
 
 // One shared integrator: its abscissas are built once; integrate() is const and
 // thread-safe (Boost extends the levels under a lock).
@@ -56,12 +56,12 @@ double s_minus_atan(double s) {
 // Relative to M1 / nu the remainder is O(nu^{2 + min(2, 1+2p)}) <= 1e-16 at nu = 1e-5
 // for p >= 0.1 (tested against the quadrature at a = 1e3 and 1e4).
 double lambda_grazing(double a, double p) {
-  return a * gbeckmann_first_moment(p) - 0.5 + 0.5 * gbeckmann_p2_at_zero(p) / a;
+  return a * smith_gbeckmann_first_moment(p) - 0.5 + 0.5 * smith_gbeckmann_p2_at_zero(p) / a;
 }
 
 }  // namespace
 
-double gbeckmann_p2(double r, double p) {
+double smith_gbeckmann_p2(double r, double p) {
   check_p(p);
   require_at_least("|r|", std::abs(r), 0.0, "[0, +inf)");
   const double r2 = r * r;
@@ -70,14 +70,14 @@ double gbeckmann_p2(double r, double p) {
   return 2.0 * slope_constant(p) * integrate_half_line(f, 1e-15);
 }
 
-double gbeckmann_p2_printed(double r, double p) { return 0.5 * gbeckmann_p2(r, p); }
+double smith_gbeckmann_p2_printed(double r, double p) { return 0.5 * smith_gbeckmann_p2(r, p); }
 
-double gbeckmann_first_moment(double p) {
+double smith_gbeckmann_first_moment(double p) {
   check_p(p);
   return schema::smith_gbeckmann::first_moment(p);
 }
 
-double gbeckmann_p2_at_zero(double p) {
+double smith_gbeckmann_p2_at_zero(double p) {
   check_p(p);
   return std::exp(boost::math::lgamma(0.5 / p) - boost::math::lgamma(1.0 / p)) / kPi;
 }

@@ -7,27 +7,27 @@
 // p (Eq. 41-42). Everything here is in the scaled slope variable r = slope / beta.
 //
 // Domain of the exact numerics: a in [0, +inf] (a = +inf is grazing: Lambda = +inf,
-// G1 = 0), p in [kGBeckmannPMin, kGBeckmannPMax]. Accuracy: Lambda to 1e-12 relative
+// G1 = 0), p in [kSmithGBeckmannPMin, kSmithGBeckmannPMax]. Accuracy: Lambda to 1e-12 relative
 // wherever Lambda > 1e-250 (below, it may underflow to 0), G1 to 1e-14 absolute.
 namespace brdftab::numerics {
 
-inline constexpr double kGBeckmannPMin = 0.1;
-inline constexpr double kGBeckmannPMax = 10.0;
-inline constexpr const char* kGBeckmannPDomain = "[0.1, 10]";
+inline constexpr double kSmithGBeckmannPMin = 0.1;
+inline constexpr double kSmithGBeckmannPMax = 10.0;
+inline constexpr const char* kSmithGBeckmannPDomain = "[0.1, 10]";
 
 // P2 of Eq. 9 for the scaled distribution: the marginal density of one slope component,
 // P2(r) = p / (pi Gamma(1/p)) * Integral_{-inf}^{inf} exp(-(r^2 + q^2)^p) dq.
 // (Eq. 40 prints the integral over [0, inf) with the same constant: half of this; see
 // validate/ERRATA.md.) Computed by exp-sinh quadrature.
-double gbeckmann_p2(double r, double p);
+double smith_gbeckmann_p2(double r, double p);
 // P2 exactly as printed in Eq. 40 (integral over [0, inf)): integrates to 1/2, not 1.
-double gbeckmann_p2_printed(double r, double p);
+double smith_gbeckmann_p2_printed(double r, double p);
 
 // Moments used by the grazing asymptotics, in closed form:
 // M1 = Integral_0^inf r P2(r) dr = Gamma(3/(2p)) / (pi Gamma(1/p)),
 // P2(0) = Gamma(1/(2p)) / (pi Gamma(1/p)).
-double gbeckmann_first_moment(double p);
-double gbeckmann_p2_at_zero(double p);
+double smith_gbeckmann_first_moment(double p);
+double smith_gbeckmann_p2_at_zero(double p);
 
 // Lambda(a, p) through the single-integral form (see the .cpp for the derivation):
 //   Lambda = 2p nu^2 / (pi Gamma(1/p)) Integral_0^inf s (s - atan s) exp(-(nu^2 (1 + s^2))^p) ds,
