@@ -18,6 +18,16 @@ struct ReportContext {
   lookup::TableSet* tables = nullptr;
   std::ofstream* markdown = nullptr;  // the report; append a "## <family>" section
   bool quiet = false;
+  // What makes `validate` exit non-zero: a table that is missing or unreadable, or whose
+  // re-measured error exceeds the error it states by more than the sampling margin.
+  std::vector<std::string> failures;
+  static constexpr double kStatedErrorMargin = 1.5;  // both are maxima over random points
+  void fail(const std::string& what) { failures.push_back(what); }
+  void check_stated(const std::string& dataset, double measured, double stated, const char* kind) {
+    if (!(measured <= kStatedErrorMargin * stated))
+      fail(dataset + ": re-measured " + kind + " error " + std::to_string(measured) + " exceeds " +
+           std::to_string(kStatedErrorMargin) + " x the stated " + std::to_string(stated));
+  }
 };
 
 using ValidationFunction = void (*)(ReportContext&);

@@ -12,13 +12,15 @@ namespace brdftab::validate::demo {
 void report(ReportContext& ctx) {
   auto& md = *ctx.markdown;
   md << "## demo (closed-form demonstration table)\n\n";
-  const lookup::Table* table = nullptr;
+  const lookup::LoadedTable* loaded = nullptr;
   try {
-    table = &ctx.tables->table(std::string(schema::demo::kFile), std::string(schema::demo::kExpCos.name));
+    loaded = &ctx.tables->get(std::string(schema::demo::kFile), std::string(schema::demo::kExpCos.name));
   } catch (const std::exception& e) {
     md << "Table not available: " << e.what() << "\n\n";
+    ctx.fail(e.what());
     return;
   }
+  const lookup::Table* table = &loaded->table;
   // Error map on a grid offset from the table grid (cell centres of a finer grid).
   const int nx = 120, ny = 60;
   std::vector<std::vector<double>> rows;
@@ -42,6 +44,7 @@ void report(ReportContext& ctx) {
   std::snprintf(buf, sizeof buf, "Max abs error on a %dx%d off-grid map: %.3e at x = %.4g, y = %.4g.\n\n", nx, ny,
                 max_abs, max_x, max_y);
   md << buf << "![demo error](demo_error.png)\n\n";
+  ctx.check_stated("demo_exp_cos", max_abs, loaded->info.attribute_number("max_abs_error", 0), "abs");
 }
 
 }  // namespace brdftab::validate::demo

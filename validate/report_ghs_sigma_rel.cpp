@@ -156,10 +156,13 @@ void section_committed_table(ReportContext& ctx, const std::vector<Point>& unifo
     t = &ctx.tables->get(std::string(schema::ghs_sigma_rel::kFile), std::string(schema::ghs_sigma_rel::kGrid.name));
   } catch (const std::exception& e) {
     md << "Table not available: " << e.what() << "\n\n";
+    ctx.fail(e.what());
     return;
   }
   const lookup::GhsSigmaRelGrid grid(*t);
   const Stats su = grid_errors(grid, uniform), ss = grid_errors(grid, stress);
+  ctx.check_stated(std::string(schema::ghs_sigma_rel::kGrid.name), std::max(su.max, ss.max),
+                   t->info.attribute_number("max_rel_error", 0), "rel");
   md << "Shape " << t->table.axis(0).n << " x " << t->table.axis(1).n << " x " << t->table.axis(2).n << " ("
      << t->table.bytes() / 1024 << " KB, " << lookup::storage_name(t->table.storage())
      << ", cubic), generator's own off-grid max relative error " << sci(t->info.attribute_number("max_rel_error", -1))

@@ -287,8 +287,10 @@ void tables_section(ReportContext& ctx) {
            << t.bytes() << " | " << sci(e) << " | " << attr << " |\n";
         csv.push_back({double(static_cast<int>(kind)), double(compact), double(t.axis(0).n), double(t.axis(1).n),
                        double(t.bytes()), e});
+        ctx.check_stated(ds, e, stored, "rel");
       } catch (const std::exception& ex) {
         md << "| " << ds << " | not available: " << ex.what() << " | | | | |\n";
+        ctx.fail(ex.what());
       }
     }
   write_csv(ctx.report_dir / "hfunc_tables.csv", {"kind", "compact", "n_c", "n_mu", "bytes", "max_rel_error"}, csv);

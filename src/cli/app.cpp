@@ -7,31 +7,38 @@
 
 #include "cli/commands.hpp"
 #include "cli/quantity.hpp"
+#include "lookup/default_tables.hpp"
+#include "lookup/version.hpp"
 
 namespace brdftab::cli {
 
+// Tables to read when --tables is not given: BRDFTAB_TABLES, else ./tables, else the
+// installed default tables (<prefix>/share/brdftab/tables), else the tables of the source
+// tree next to the build folder the executable runs from. Reading only: generate writes
+// to --out, which defaults to ./tables, never to an installed or source folder.
 std::filesystem::path default_tables_dir() {
+  namespace fs = std::filesystem;
   if (const char* env = std::getenv("BRDFTAB_TABLES"); env && *env) return env;
   std::error_code ec;
-  if (std::filesystem::is_directory("tables", ec)) return "tables";
-#ifdef BRDFTAB_DEFAULT_TABLES
-  return BRDFTAB_DEFAULT_TABLES;
-#else
+  if (fs::is_directory("tables", ec)) return "tables";
+  if (fs::is_directory(lookup::installed_tables_dir(), ec)) return lookup::installed_tables_dir();
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec && fs::is_regular_file(exe.parent_path().parent_path() / "tables" / "default.json", ec))
+    return exe.parent_path().parent_path() / "tables";
   return "tables";
-#endif
 }
 
 int run_main(int argc, char** argv) {
   CLI::App app{"brdftab: exact numerics and HDF5 lookup tables for BRDF models"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "brdftab 0.1.0");
+  app.set_version_flag("--version", std::string("brdftab ") + kVersion);
 
   GenerateOptions gen;
   auto* g = app.add_subcommand("generate", "generate the tables a manifest lists (default: tables/default.json)");
   g->add_option("--manifest", gen.manifest, "manifest JSON file")->check(CLI::ExistingFile);
   g->add_option("--out", gen.out_dir, "output folder (default: the table folder)");
   g->add_option("--only", gen.only, "generate only these families")->expected(1, -1);
-  g->add_option("--threads", gen.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  g->add_option("--threads", gen.threads, "OpenMP threads, 1-1024 (default: all cores)")->check(CLI::Range(1, 1024));
   g->add_flag("--quiet,-q", gen.quiet, "no progress output");
 
   EvalOptions ev;
@@ -47,6 +54,8 @@ int run_main(int argc, char** argv) {
   v->add_option("--tables", va.tables_dir, "table folder (default: tables)");
   v->add_option("--report", va.report_dir, "report folder (default: report)");
   v->add_flag("--quiet,-q", va.quiet, "less output");
+  v->add_option("--only", va.only, "run only these families' sections")->expected(1, -1);
+  v->add_flag("--json", va.json, "print a JSON summary (also written to REPORT/summary.json)");
 
   BenchOptions be;
   auto* b = app.add_subcommand("bench", "speed against error: exact numerics, tables, fits (Google Benchmark)");
@@ -62,14 +71,17 @@ int run_main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::Success& ok) {  // --help, --version
+    return app.exit(ok);
   } catch (const CLI::ParseError& err) {
-    return app.exit(err);
+    app.exit(err);  // prints CLI11's message
+    return 2;       // usage errors are bad input: exit status 2, as documented
   }
   if (ev.tables_dir.empty()) ev.tables_dir = default_tables_dir();
   if (va.tables_dir.empty()) va.tables_dir = default_tables_dir();
   if (be.tables_dir.empty()) be.tables_dir = default_tables_dir();
   if (va.report_dir.empty()) va.report_dir = "report";
-  if (gen.out_dir.empty()) gen.out_dir = default_tables_dir();
+  if (gen.out_dir.empty()) gen.out_dir = "tables";
 
   if (g->parsed()) return run_generate(gen, std::cout, std::cerr);
   if (e->parsed()) return run_eval(ev, std::cin, std::cout, std::cerr);

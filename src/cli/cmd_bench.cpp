@@ -13,7 +13,13 @@ int run_bench(const BenchOptions& o, std::ostream& err) {
   std::vector<std::string> args = {"brdftab-bench"};
   for (const auto& a : o.benchmark_args) args.push_back(a);
   if (!o.report_dir.empty()) {
-    std::filesystem::create_directories(o.report_dir);
+    std::error_code ec;
+    std::filesystem::create_directories(o.report_dir, ec);
+    if (ec || !std::filesystem::is_directory(o.report_dir)) {
+      err << "brdftab bench: cannot create the report folder '" << o.report_dir.string() << "': "
+          << (ec ? ec.message() : "not a directory") << "\n";
+      return 1;
+    }
     args.push_back("--benchmark_out=" + (o.report_dir / "bench.json").string());
     args.push_back("--benchmark_out_format=json");
   }

@@ -33,6 +33,8 @@ int run_info(const std::filesystem::path& file, std::ostream& out, std::ostream&
 int run_info_markdown(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err);
 
 struct ValidateOptions {
+  std::vector<std::string> only;  // run only these families' sections
+  bool json = false;  // print the summary as JSON on stdout
   std::filesystem::path tables_dir;
   std::filesystem::path report_dir;
   bool quiet = false;

@@ -13,3 +13,11 @@ run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer -B ${WORK_DIR}/build -DCMAK
     -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer ${SOURCE_DIR}/tables)
+# The installed default tables, found through the library's default search (BRDFTAB_TABLES).
+run(${CMAKE_COMMAND} -E env BRDFTAB_TABLES=${WORK_DIR}/prefix/share/brdftab/tables ${WORK_DIR}/build/consumer)
+# pkg-config file and licence installed.
+foreach(f lib/pkgconfig/brdftab.pc share/doc/brdftab/LICENSE include/brdftab/lookup/version.hpp)
+  if(NOT EXISTS ${WORK_DIR}/prefix/${f})
+    message(FATAL_ERROR "not installed: ${f}")
+  endif()
+endforeach()
