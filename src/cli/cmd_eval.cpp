@@ -17,26 +17,10 @@ namespace brdftab::cli {
 
 namespace {
 
-const Quantity* find_quantity(const std::string& name) {
-  for (const auto& q : all_quantities())
-    if (q.name == name) return &q;
-  return nullptr;
-}
-
 std::string list(const std::vector<std::string>& v) {
   std::string s;
   for (const auto& x : v) s += (s.empty() ? "" : ",") + x;
   return s;
-}
-
-// Empty string if v is a valid value of p, else why not.
-std::string domain_problem(const Parameter& p, double v) {
-  if (std::isnan(v)) return "is not a number";
-  const bool lo_ok = p.lo_open ? v > p.lo : v >= p.lo;
-  const bool hi_ok = p.hi_open ? v < p.hi : v <= p.hi;
-  if (!lo_ok || !hi_ok) return "is outside the valid domain";
-  if (p.integer && v != std::floor(v)) return "is not in the valid domain";
-  return "";
 }
 
 }  // namespace

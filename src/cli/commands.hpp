@@ -8,7 +8,8 @@
 
 namespace brdftab::cli {
 
-// Default table folder: $BRDFTAB_TABLES, else ./tables if it exists, else the source tree's tables/.
+// Default table folder to read: $BRDFTAB_TABLES, else ./tables if it exists, else the installed
+// tables, else the source tree next to the build folder (see app.cpp).
 std::filesystem::path default_tables_dir();
 
 struct GenerateOptions {

@@ -38,6 +38,12 @@ struct Quantity {
   std::map<std::string, Method> methods;  // keys among "exact", "table", "fit"
 };
 
+// Empty if v is a valid value of p, else why not ("is outside the valid domain", ...);
+// the caller appends p.domain. Shared by `eval` and the Python bindings.
+std::string domain_problem(const Parameter& p, double v);
+// The quantity named `name`, or nullptr.
+const Quantity* find_quantity(const std::string& name);
+
 // All quantities (src/cli/quantity_registry.cpp): every family K of
 // generators/family_list.hpp contributes `std::vector<Quantity> cli::K::quantities()`
 // (src/cli/eval_K.cpp).

@@ -1,4 +1,6 @@
 // Every quantity `brdftab eval` knows, from generators/family_list.hpp.
+#include <cmath>
+
 #include "cli/quantity.hpp"
 #include "generators/family_list.hpp"
 
@@ -18,6 +20,21 @@ const std::vector<FamilyQuantities>& quantities_by_family() {
 #undef BRDFTAB_ADD
   };
   return families;
+}
+
+std::string domain_problem(const Parameter& p, double v) {
+  if (std::isnan(v)) return "is not a number";
+  const bool lo_ok = p.lo_open ? v > p.lo : v >= p.lo;
+  const bool hi_ok = p.hi_open ? v < p.hi : v <= p.hi;
+  if (!lo_ok || !hi_ok) return "is outside the valid domain";
+  if (p.integer && v != std::floor(v)) return "is not in the valid domain";
+  return "";
+}
+
+const Quantity* find_quantity(const std::string& name) {
+  for (const auto& q : all_quantities())
+    if (q.name == name) return &q;
+  return nullptr;
 }
 
 const std::vector<Quantity>& all_quantities() {
