@@ -166,7 +166,9 @@ inline void load_pairs(const double* const* p, std::ptrdiff_t off, __m256d& lo, 
   hi = _mm256_unpackhi_pd(a, b);
 }
 inline __m128 load_float_pair2(const float* a, const float* b) {  // (a[0], a[1], b[0], b[1])
-  return _mm_castpd_ps(_mm_loadh_pd(_mm_load_sd(reinterpret_cast<const double*>(a)), reinterpret_cast<const double*>(b)));
+  // 64-bit integer loads (_mm_loadl_epi64 reads through a may_alias type: no strict-aliasing issue).
+  return _mm_castsi128_ps(_mm_unpacklo_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(a)),
+                                             _mm_loadl_epi64(reinterpret_cast<const __m128i*>(b))));
 }
 inline void load_pairs(const float* const* p, std::ptrdiff_t off, __m256d& lo, __m256d& hi) {
   const __m256d a = _mm256_cvtps_pd(load_float_pair2(p[0] + off, p[2] + off));  // exact widening
