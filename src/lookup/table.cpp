@@ -79,8 +79,10 @@ struct KernelImpl {
     const double v = accumulate<0, D, K, T>(values + offset, strides, w);
     return nan ? std::numeric_limits<double>::quiet_NaN() : v;
   }
+  // flatten: the stencil and the sum are inlined into the kernel (GCC otherwise may call the
+  // cubic stencil out of line: measured 15 -> 20 ns per 2-D cubic query).
   template <bool Identity>
-  static double eval(const Table& tb, const double* x) {
+  [[gnu::flatten]] static double eval(const Table& tb, const double* x) {
     return point<Identity>(tb.maps_.data(), tb.strides_.data(), data(tb), x);
   }
   // Batched: groups of 4 points go to the AVX2 kernel (table_simd.cpp) when the CPU has
@@ -88,7 +90,7 @@ struct KernelImpl {
   // pass 1 computes every point's stencil (index and weights) axis by axis, a loop without
   // dependencies between points that the compiler vectorizes; pass 2 gathers the values and sums.
   template <bool Identity>
-  static void batch(const Table& tb, const double* pts, std::size_t n, double* out) {
+  [[gnu::flatten]] static void batch(const Table& tb, const double* pts, std::size_t n, double* out) {
 #ifdef BRDFTAB_HAVE_AVX2_KERNELS
     if (detail::avx2_enabled() && tb.size_ < (std::size_t(1) << 31) - 1) {
       const std::size_t n4 = n - n % 4;
