@@ -163,8 +163,10 @@ TEST_CASE("out-of-domain and NaN queries: clamp or error, never undefined") {
   CHECK_THROWS_AS(t.eval_batch(pts, std::span<double>(out.data(), 1)), std::invalid_argument);
 }
 
+// (Log axes: the batched path's vector log may differ from std::log in the last bit; that
+// bound is tested in test_lookup_simd.cpp.)
 TEST_CASE("batched queries equal scalar queries; concurrent queries from many threads agree") {
-  const std::vector<Axis> axes = {make_axis("x", Transform::log, 0.1, 10.0, 20),
+  const std::vector<Axis> axes = {make_axis("x", Transform::x_over_k_plus_x, 0.1, 10.0, 20, 1.5),
                                   make_axis("y", Transform::identity, 0.0, 1.0, 30),
                                   make_axis("z", Transform::sqrt, 0.0, 2.0, 10)};
   auto f = [](const double* x) { return std::log(x[0]) * std::cos(x[1]) + x[2]; };

@@ -1,27 +1,198 @@
 // `brdftab eval QUANTITY [--method exact|table|fit] [--tables DIR] < in.csv > out.csv`
 //
-// All rows are read and checked before any is computed, and output is written only when
-// every row succeeded: a bad row never leaves a partial CSV on stdout.
-#include <cmath>
-#include <istream>
-#include <ostream>
-#include <sstream>
+// Every row is read and checked before any is computed, and output is written only when
+// every row succeeded: a bad row never leaves a partial CSV on stdout. Rows are checked and
+// computed in parallel (OpenMP) and printed in input order; memory does not grow with the
+// number of rows:
+//  1. Check: rows are read in chunks of kChunkRows, checked in parallel (cell count,
+//     numbers, domains), and each checked row is appended compactly to an input spool: its
+//     line number, its parameter values (binary doubles) and its input columns as they will
+//     be printed. The first bad row in input order stops eval before anything is computed.
+//  2. Compute: the spool is read back chunk by chunk, the rows are computed in parallel and
+//     their output lines appended, in order, to an output spool. A row whose method throws
+//     stops eval with nothing printed; when all succeeded, the output spool goes to stdout.
+// A spool keeps up to kSpoolMemory bytes in memory (environment variables
+// BRDFTAB_EVAL_SPOOL_BYTES and BRDFTAB_EVAL_CHUNK_ROWS override the spool memory and the
+// chunk size; tests use them to exercise the file path and chunk boundaries) and
+// continues in an anonymous temporary file (std::tmpfile: unique to this run, removed when
+// eval ends), so memory stays below about 2 kSpoolMemory + a chunk whatever the row count,
+// and small inputs touch no file.
+// The header may be of any width and rows of any length: each is handled in linear time
+// (columns are matched through a hash map).
+#include <omp.h>
 
-#include "lookup/number_format.hpp"
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <istream>
+#include <memory>
+#include <ostream>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
 #include "cli/commands.hpp"
 #include "cli/csv.hpp"
 #include "cli/quantity.hpp"
+#include "lookup/number_format.hpp"
 #include "lookup/table_set.hpp"
 
 namespace brdftab::cli {
 
 namespace {
 
+constexpr std::size_t kChunkRows = 65536;
+constexpr std::size_t kSpoolMemory = std::size_t(8) << 20;
+
+std::size_t spool_memory() {
+  if (const char* v = std::getenv("BRDFTAB_EVAL_SPOOL_BYTES")) return std::strtoull(v, nullptr, 10);
+  return kSpoolMemory;
+}
+std::size_t chunk_rows() {
+  if (const char* v = std::getenv("BRDFTAB_EVAL_CHUNK_ROWS")) return std::max<std::size_t>(1, std::strtoull(v, nullptr, 10));
+  return kChunkRows;
+}
+
 std::string list(const std::vector<std::string>& v) {
   std::string s;
   for (const auto& x : v) s += (s.empty() ? "" : ",") + x;
   return s;
 }
+
+// Appends v as lookup::format_number(v) does (std::to_chars, shortest round-trip), without
+// a temporary string.
+void append_number(std::string& s, double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  s.append(buf, r.ptr);
+}
+
+// Append-only byte store: memory up to a limit, then an anonymous temporary file.
+class Spool {
+ public:
+  explicit Spool(std::size_t memory_limit) : limit_(memory_limit) {}
+  ~Spool() {
+    if (file_) std::fclose(file_);
+  }
+  Spool(const Spool&) = delete;
+  Spool& operator=(const Spool&) = delete;
+
+  void write(const void* p, std::size_t n) {
+    if (!file_ && mem_.size() + n <= limit_) {
+      mem_.append(static_cast<const char*>(p), n);
+      return;
+    }
+    if (!file_) {
+      file_ = std::tmpfile();
+      if (!file_) throw std::runtime_error(std::string("cannot create a temporary file: ") + std::strerror(errno));
+      put(mem_.data(), mem_.size());
+      std::string().swap(mem_);
+    }
+    put(p, n);
+  }
+  template <class T>
+  void write_value(const T& v) {
+    write(&v, sizeof v);
+  }
+  bool spilled() const { return file_ != nullptr; }
+  // Switches to reading from the start.
+  void rewind() {
+    pos_ = 0;
+    if (file_ && (std::fflush(file_) != 0 || std::fseek(file_, 0, SEEK_SET) != 0))
+      throw std::runtime_error(std::string("temporary file: ") + std::strerror(errno));
+  }
+  void read(void* p, std::size_t n) {
+    if (file_) {
+      if (std::fread(p, 1, n, file_) != n) throw std::runtime_error("temporary file: short read");
+    } else {
+      if (pos_ + n > mem_.size()) throw std::logic_error("spool: read past the end");
+      std::memcpy(p, mem_.data() + pos_, n);
+      pos_ += n;
+    }
+  }
+  template <class T>
+  T read_value() {
+    T v;
+    read(&v, sizeof v);
+    return v;
+  }
+  void copy_to(std::ostream& out) {
+    if (!file_) {
+      out.write(mem_.data(), static_cast<std::streamsize>(mem_.size()));
+      return;
+    }
+    rewind();
+    std::vector<char> buf(std::size_t(1) << 20);
+    for (std::size_t got; (got = std::fread(buf.data(), 1, buf.size(), file_)) > 0;)
+      out.write(buf.data(), static_cast<std::streamsize>(got));
+  }
+
+ private:
+  void put(const void* p, std::size_t n) {
+    if (n && std::fwrite(p, 1, n, file_) != n)
+      throw std::runtime_error(std::string("cannot write a temporary file: ") + std::strerror(errno));
+  }
+  std::size_t limit_;
+  std::string mem_;
+  std::size_t pos_ = 0;
+  std::FILE* file_ = nullptr;
+};
+
+// Lines of a stream, as std::getline would give them, read in blocks of 1 MiB (one
+// istream::read per block instead of a locked character-by-character read of std::cin).
+// Linear in the input length however long a line is.
+class LineReader {
+ public:
+  explicit LineReader(std::istream& in) : in_(in) {}
+  bool next(std::string& line) {
+    while (true) {
+      const std::size_t nl = buf_.find('\n', scan_);
+      if (nl != std::string::npos) {
+        line.assign(buf_, pos_, nl - pos_);
+        pos_ = scan_ = nl + 1;
+        return true;
+      }
+      if (eof_) {
+        if (pos_ == buf_.size()) return false;
+        line.assign(buf_, pos_);
+        pos_ = scan_ = buf_.size();
+        return true;
+      }
+      buf_.erase(0, pos_);
+      scan_ = buf_.size();
+      pos_ = 0;
+      const std::size_t old = buf_.size();
+      buf_.resize(old + kBlock);
+      in_.read(buf_.data() + old, kBlock);
+      const std::size_t got = static_cast<std::size_t>(in_.gcount());
+      buf_.resize(old + got);
+      if (got < kBlock) eof_ = true;
+    }
+  }
+
+ private:
+  static constexpr std::size_t kBlock = std::size_t(1) << 20;
+  std::istream& in_;
+  std::string buf_;
+  std::size_t pos_ = 0, scan_ = 0;  // start of the next line; where the newline search resumes
+  bool eof_ = false;
+};
+
+// One chunk of rows between the passes.
+struct Chunk {
+  std::vector<std::string> text;     // pass 1: the raw lines; pass 2: the printed input columns
+  std::vector<std::uint64_t> line;   // physical line numbers (blank lines are skipped)
+  std::vector<double> inputs;        // rows x parameters
+  std::vector<std::string> problem;  // pass 1/2: why a row failed (empty if it did not)
+  std::size_t rows = 0;
+};
 
 }  // namespace
 
@@ -33,108 +204,181 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
     err << "brdftab eval: unknown quantity '" << o.quantity << "' (known: " << list(names) << ")\n";
     return 2;
   }
-  auto method = q->methods.find(o.method);
-  if (method == q->methods.end()) {
+  auto method_it = q->methods.find(o.method);
+  if (method_it == q->methods.end()) {
     std::vector<std::string> names;
     for (const auto& [k, v] : q->methods) names.push_back(k);
     err << "brdftab eval " << q->name << ": no method '" << o.method << "' for this quantity (available: "
         << list(names) << ")\n";
     return 2;
   }
+  const Method& method = method_it->second;
   std::vector<std::string> param_names;
   for (const auto& p : q->parameters) param_names.push_back(p.name);
+  const std::string what = "brdftab eval " + q->name;
 
+  LineReader reader(in);
   std::string line;
-  if (!std::getline(in, line)) {
-    err << "brdftab eval " << q->name << ": empty input; expected a CSV header naming the columns "
-        << list(param_names) << "\n";
+  if (!reader.next(line)) {
+    err << what << ": empty input; expected a CSV header naming the columns " << list(param_names) << "\n";
     return 2;
   }
   const auto header = split_csv_line(line);
-  for (std::size_t c = 0; c < header.size(); ++c)
-    for (std::size_t c2 = c + 1; c2 < header.size(); ++c2)
-      if (header[c] == header[c2]) {
-        err << "brdftab eval " << q->name << ": header (line 1): column '" << header[c] << "' appears twice\n";
-        return 2;
-      }
-  std::vector<int> column_of(q->parameters.size(), -1);
-  for (std::size_t i = 0; i < q->parameters.size(); ++i) {
-    for (std::size_t c = 0; c < header.size(); ++c)
-      if (header[c] == q->parameters[i].name) column_of[i] = static_cast<int>(c);
-    if (column_of[i] < 0) {
-      err << "brdftab eval " << q->name << ": header (line 1): missing column '" << q->parameters[i].name
+  const std::size_t ncol = header.size(), np = q->parameters.size();
+  std::unordered_map<std::string_view, std::size_t> column_by_name;
+  column_by_name.reserve(ncol);
+  for (std::size_t c = 0; c < ncol; ++c)
+    if (!column_by_name.emplace(header[c], c).second) {
+      err << what << ": header (line 1): column '" << header[c] << "' appears twice\n";
+      return 2;
+    }
+  std::vector<std::size_t> column_of(np);
+  std::vector<int> param_of_column(ncol, -1);
+  for (std::size_t i = 0; i < np; ++i) {
+    const auto it = column_by_name.find(q->parameters[i].name);
+    if (it == column_by_name.end()) {
+      err << what << ": header (line 1): missing column '" << q->parameters[i].name
           << "' (this quantity needs columns " << list(param_names) << "; got " << list(header) << ")\n";
       return 2;
     }
+    column_of[i] = it->second;
+    param_of_column[it->second] = static_cast<int>(i);
   }
 
-  // Read and check every row.
-  std::vector<std::vector<std::string>> cells;
-  std::vector<std::size_t> line_of_row;  // physical line numbers (blank lines are skipped)
-  std::vector<double> inputs;
-  std::size_t row = 0, line_no = 1;
-  const std::size_t np = q->parameters.size();
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank line
-    ++row;
-    line_of_row.push_back(line_no);
-    auto c = split_csv_line(line);
-    if (c.size() != header.size()) {
-      err << "brdftab eval " << q->name << ": row " << row << " (line " << line_no << "): " << c.size()
-          << " cells, the header has " << header.size() << "\n";
-      return 2;
-    }
-    for (std::size_t i = 0; i < np; ++i) {
-      const Parameter& p = q->parameters[i];
-      const std::string& cell = c[column_of[i]];
-      const auto v = parse_number(cell);
-      std::string problem = v ? domain_problem(p, *v) : "is not a number";
-      if (!problem.empty()) {
-        err << "brdftab eval " << q->name << ": row " << row << " (line " << line_no << "), column '" << p.name
-            << "': value '" << cell << "' " << problem << " " << p.domain << "\n";
-        return 2;
+  try {
+    // Pass 1: read, check, spool.
+    Spool spool_in(spool_memory());
+    const std::size_t chunk = chunk_rows();
+    Chunk ch;
+    ch.text.resize(chunk);
+    ch.line.resize(chunk);
+    ch.problem.resize(chunk);
+    ch.inputs.resize(chunk * np);
+    std::size_t rows_before = 0, line_no = 1;
+    for (bool more = true; more;) {
+      ch.rows = 0;
+      while (ch.rows < chunk && (more = reader.next(ch.text[ch.rows]))) {
+        ++line_no;
+        if (ch.text[ch.rows].find_first_not_of(" \t\r") == std::string::npos) continue;  // blank line
+        ch.line[ch.rows++] = line_no;
       }
-      inputs.push_back(*v);
+      const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(ch.rows);
+#pragma omp parallel for schedule(dynamic, 256)
+      for (std::ptrdiff_t r = 0; r < m; ++r) {
+        std::string& text = ch.text[r];
+        std::string& problem = ch.problem[r];
+        problem.clear();
+        const auto cells = split_csv_line(text);
+        auto where = [&] {
+          return "row " + std::to_string(rows_before + r + 1) + " (line " + std::to_string(ch.line[r]) + ")";
+        };
+        if (cells.size() != ncol) {
+          problem = where() + ": " + std::to_string(cells.size()) + " cells, the header has " + std::to_string(ncol);
+          continue;
+        }
+        double* v = ch.inputs.data() + r * np;
+        for (std::size_t i = 0; i < np && problem.empty(); ++i) {
+          const Parameter& p = q->parameters[i];
+          const std::string& cell = cells[column_of[i]];
+          const auto value = parse_number(cell);
+          const std::string why = value ? domain_problem(p, *value) : "is not a number";
+          if (!why.empty())
+            problem = where() + ", column '" + p.name + "': value '" + cell + "' " + why + " " + p.domain;
+          else
+            v[i] = *value;
+        }
+        if (!problem.empty()) continue;
+        // The input columns as printed: parameters in shortest round-trip form, others as given.
+        text.clear();
+        for (std::size_t c = 0; c < ncol; ++c) {
+          if (c) text += ',';
+          if (param_of_column[c] >= 0)
+            append_number(text, v[param_of_column[c]]);
+          else
+            text += cells[c];
+        }
+      }
+      for (std::size_t r = 0; r < ch.rows; ++r)
+        if (!ch.problem[r].empty()) {
+          err << what << ": " << ch.problem[r] << "\n";
+          return 2;
+        }
+      for (std::size_t r = 0; r < ch.rows; ++r) {
+        spool_in.write_value<std::uint64_t>(ch.line[r]);
+        spool_in.write(ch.inputs.data() + r * np, np * sizeof(double));
+        spool_in.write_value<std::uint64_t>(ch.text[r].size());
+        spool_in.write(ch.text[r].data(), ch.text[r].size());
+      }
+      rows_before += ch.rows;
     }
-    cells.push_back(std::move(c));
-  }
+    const std::size_t total_rows = rows_before;
 
-  // Compute, then print everything at once.
-  std::unique_ptr<lookup::TableSet> tables;
-  EvalContext ctx;
-  std::ostringstream buffer;
-  buffer << list(header);
-  for (const auto& name : q->outputs) buffer << "," << name;
-  buffer << "\n";
-  std::vector<double> result(q->outputs.size());
-  for (std::size_t r = 0; r < cells.size(); ++r) {
-    try {
+    // Pass 2: compute in parallel, spool the output in order.
+    std::unique_ptr<lookup::TableSet> tables;
+    EvalContext ctx;
+    Spool spool_out(spool_memory());
+    {
+      std::string head = list(header);
+      for (const auto& name : q->outputs) head += "," + name;
+      head += "\n";
+      spool_out.write(head.data(), head.size());
+    }
+    spool_in.rewind();
+    const std::size_t nout = q->outputs.size();
+    for (std::size_t done = 0; done < total_rows; done += ch.rows) {
+      ch.rows = std::min(chunk, total_rows - done);
+      for (std::size_t r = 0; r < ch.rows; ++r) {
+        ch.line[r] = spool_in.read_value<std::uint64_t>();
+        spool_in.read(ch.inputs.data() + r * np, np * sizeof(double));
+        ch.text[r].resize(spool_in.read_value<std::uint64_t>());
+        spool_in.read(ch.text[r].data(), ch.text[r].size());
+      }
       if (o.method == "table" && !tables) {
-        tables = std::make_unique<lookup::TableSet>(o.tables_dir);
+        try {
+          tables = std::make_unique<lookup::TableSet>(o.tables_dir);
+        } catch (const std::exception& e) {
+          err << what << " --method " << o.method << ": row 1 (line " << ch.line[0] << "): " << e.what() << "\n";
+          return 2;
+        }
         ctx.tables = tables.get();
       }
-      method->second(std::span<const double>(inputs.data() + r * np, np), result, ctx);
-    } catch (const std::exception& e) {
-      err << "brdftab eval " << q->name << " --method " << o.method << ": row " << r + 1 << " (line " << line_of_row[r]
-          << "): " << e.what() << "\n";
-      return 2;
-    }
-    for (std::size_t c = 0; c < header.size(); ++c) {
-      if (c) buffer << ",";
-      bool is_param = false;
-      for (std::size_t i = 0; i < np; ++i)
-        if (column_of[i] == static_cast<int>(c)) {
-          buffer << lookup::format_number(inputs[r * np + i]);
-          is_param = true;
+      const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(ch.rows);
+#pragma omp parallel
+      {
+        std::vector<double> result(nout);
+#pragma omp for schedule(dynamic, 64)
+        for (std::ptrdiff_t r = 0; r < m; ++r) {
+          ch.problem[r].clear();
+          try {
+            method(std::span<const double>(ch.inputs.data() + r * np, np), result, ctx);
+          } catch (const std::exception& e) {
+            ch.problem[r] = e.what();
+            if (ch.problem[r].empty()) ch.problem[r] = "failed";
+            continue;
+          }
+          std::string& text = ch.text[r];
+          for (double v : result) {
+            text += ',';
+            append_number(text, v);
+          }
+          text += '\n';
         }
-      if (!is_param) buffer << cells[r][c];
+      }
+      for (std::size_t r = 0; r < ch.rows; ++r) {
+        if (!ch.problem[r].empty()) {
+          err << what << " --method " << o.method << ": row " << done + r + 1 << " (line " << ch.line[r]
+              << "): " << ch.problem[r] << "\n";
+          return 2;
+        }
+        spool_out.write(ch.text[r].data(), ch.text[r].size());
+      }
     }
-    for (double v : result) buffer << "," << lookup::format_number(v);
-    buffer << "\n";
+    spool_out.copy_to(out);
+    out.flush();
+  } catch (const std::exception& e) {  // temporary-file trouble
+    err << what << ": " << e.what() << "\n";
+    return 2;
   }
-  out << buffer.str();
-  out.flush();
   return 0;
 }
 

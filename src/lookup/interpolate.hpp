@@ -61,15 +61,19 @@ inline void stencil(const AxisMap& a, double x, ToU to_u, int& base, double* w) 
 }
 
 // Tensor-product sum over the K^D stencil starting at p; the last axis is contiguous.
+// Each sum starts from its first product and adds the others in order (the SIMD kernels in
+// table_simd.cpp do the same operations in the same order, lane by lane).
 template <int d, int D, int K, class T>
 inline double accumulate(const T* p, const std::size_t* strides, const double (*w)[K]) {
-  double s = 0;
   if constexpr (d == D - 1) {
-    for (int k = 0; k < K; ++k) s += w[d][k] * static_cast<double>(p[k]);
+    double s = w[d][0] * static_cast<double>(p[0]);
+    for (int k = 1; k < K; ++k) s += w[d][k] * static_cast<double>(p[k]);
+    return s;
   } else {
-    for (int k = 0; k < K; ++k) s += w[d][k] * accumulate<d + 1, D, K, T>(p + k * strides[d], strides, w);
+    double s = w[d][0] * accumulate<d + 1, D, K, T>(p, strides, w);
+    for (int k = 1; k < K; ++k) s += w[d][k] * accumulate<d + 1, D, K, T>(p + k * strides[d], strides, w);
+    return s;
   }
-  return s;
 }
 
 }  // namespace brdftab::lookup::interp

@@ -59,8 +59,13 @@ class Table {
   std::size_t bytes() const { return size_ * (storage_ == Storage::float32 ? 4 : 8); }
   double at_index(std::span<const int> index) const;  // the stored grid value
 
-  // Scalar query: x holds one coordinate per axis (x.size() == rank()).
-  double eval(std::span<const double> x, OutOfDomain policy = OutOfDomain::clamp) const;
+  // Scalar query: x holds one coordinate per axis (x.size() == rank()). The common case
+  // (right rank, clamp) is one indirect call into the kernel chosen at construction.
+  double eval(std::span<const double> x, OutOfDomain policy = OutOfDomain::clamp) const {
+    if (static_cast<int>(x.size()) != rank_ || policy != OutOfDomain::clamp || !kernel_) [[unlikely]]
+      return eval_checked(x, policy);
+    return kernel_(*this, x.data());
+  }
   double operator()(double x0) const { return eval1(x0); }
   double operator()(double x0, double x1) const { return eval2(x0, x1); }
   double operator()(double x0, double x1, double x2) const {
@@ -96,6 +101,7 @@ class Table {
   BatchKernel batch_kernel_ = nullptr;
 
   void check_point(const double* x, OutOfDomain policy) const;
+  double eval_checked(std::span<const double> x, OutOfDomain policy) const;
   template <int D, int K, class T> friend struct KernelImpl;
 };
 
