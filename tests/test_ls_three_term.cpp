@@ -1,0 +1,130 @@
+// The exact three-term Lambertian-sphere half space (d'Eon Sec. 3, Horak & Chandrasekhar):
+// constants from H-function moments vs an independent invariance-principle solver, limits,
+// energy, and verdicts on the paper's fitted constants (Eq. 31-32, 39-42).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "numerics/ls_deon_model.hpp"
+#include "numerics/ls_phase.hpp"
+#include "numerics/ls_three_term.hpp"
+#include "numerics/ls_three_term_invariance.hpp"
+
+using namespace brdftab::numerics;
+using std::numbers::pi;
+
+namespace {
+const double kMus[] = {1e-7, 1e-3, 0.05, 0.3, 0.71, 1.0};
+
+// Fourier coefficient of c p3(-omega_i . omega_o)/(mu_i + mu_o) by quadrature over phi (Eq. 8, 33, 43)
+double single_mode_by_quadrature(int m, double c, double mu_i, double mu_o) {
+  const double s = std::sqrt((1 - mu_i * mu_i) * (1 - mu_o * mu_o));
+  auto f = [&](double phi) {
+    return c * ls_phase_three_term(-(mu_i * mu_o + s * std::cos(phi))) / (mu_i + mu_o) * std::cos(m * phi);
+  };
+  return (m == 0 ? 1.0 : 2.0) / pi * boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, 0.0, pi);
+}
+}  // namespace
+
+TEST_CASE("ls three-term: single-scattering modes vs quadrature of Eq. 5 in Eq. 17; Eq. 34 is off by 2") {
+  for (double c : {0.3, 1.0})
+    for (double mi : {0.01, 0.4, 1.0})
+      for (double mo : {0.02, 0.5, 0.9})
+        for (int m = 0; m <= 2; ++m)
+          CHECK(std::abs(ls_three_term_single_mode(m, c, mi, mo) - single_mode_by_quadrature(m, c, mi, mo)) <
+                1e-13 * std::abs(ls_three_term_single_mode(m, c, mi, mo)) + 1e-16);
+  // Eq. 34 as printed (384 pi) is half of Eq. 33
+  const double mi = 0.4, mo = 0.5, s = std::sqrt((1 - mi * mi) * (1 - mo * mo));
+  const double eq34 = (45 * mi * mo + 64) * s / (384 * pi * (mi + mo));
+  CHECK(single_mode_by_quadrature(1, 1.0, mi, mo) / eq34 == doctest::Approx(2.0).epsilon(1e-13));
+}
+
+TEST_CASE("ls three-term: modes from H-function constants agree with the independent invariance solver") {
+  double worst = 0.0;
+  for (double c : {0.05, 0.9}) {
+    const LsThreeTermBrdf exact(c);
+    for (int m = 0; m <= 2; ++m) {
+      const LsThreeTermInvariance numeric(c, m);
+      for (double mi : kMus)
+        for (double mo : kMus) {
+          if (m > 0 && (mi == 1.0 || mo == 1.0)) continue;  // modes 1, 2 vanish there
+          const double a = exact.mode(m, mi, mo), b = numeric.mode(mi, mo);
+          worst = std::max(worst, std::abs(a / b - 1));
+        }
+    }
+  }
+  MESSAGE("three-term modes: H-function constants vs invariance solver, max relative difference " << worst);
+  CHECK(worst < 1e-12);
+}
+
+TEST_CASE("ls three-term: c = 1 (conservative): modes vs the invariance solver, plane albedo = 1") {
+  const LsThreeTermBrdf exact(1.0);
+  double worst[3] = {0, 0, 0};
+  for (int m = 0; m <= 2; ++m) {
+    // m = 0: linear convergence at the double root, ~1e-8 after 30 steps; a coarser rule suffices
+    LsInvarianceOptions coarse;
+    coarse.panels = 16;
+    coarse.points_per_panel = 8;
+    coarse.max_newton = 30;
+    const LsThreeTermInvariance numeric(1.0, m, m == 0 ? coarse : LsInvarianceOptions{});
+    for (double mi : kMus)
+      for (double mo : kMus) {
+        if (m > 0 && (mi == 1.0 || mo == 1.0)) continue;
+        worst[m] = std::max(worst[m], std::abs(exact.mode(m, mi, mo) / numeric.mode(mi, mo) - 1));
+      }
+  }
+  MESSAGE("c = 1: max relative difference per mode " << worst[0] << ", " << worst[1] << ", " << worst[2]);
+  CHECK(worst[0] < 1e-7);  // the invariance solver's Newton meets a double root at c = 1 (m = 0)
+  CHECK(worst[1] < 1e-12);
+  CHECK(worst[2] < 1e-12);
+  for (double mu : {0.0, 1e-9, 0.2, 0.6, 1.0}) CHECK(exact.plane_albedo(mu) == doctest::Approx(1.0).epsilon(1e-12));
+  CHECK(exact.spherical_albedo() == doctest::Approx(1.0).epsilon(1e-12));
+}
+
+TEST_CASE("ls three-term: c -> 0 reduces to single scattering; albedo < 1 for c < 1") {
+  const double c = 1e-6;
+  const LsThreeTermBrdf exact(c);
+  for (double mi : {0.01, 0.5, 1.0})
+    for (double mo : {0.03, 0.5, 0.99})
+      for (int m = 0; m <= 2; ++m) {
+        const double s = ls_three_term_single_mode(m, c, mi, mo);
+        if (s == 0.0) continue;
+        CHECK(std::abs(exact.mode(m, mi, mo) / s - 1) < 1e-5);  // multiple scattering is O(c)
+      }
+  for (double cc : {0.0, 0.3, 0.9, 0.999}) {
+    const LsThreeTermBrdf e(cc);
+    CHECK(e.spherical_albedo() < 1.0);
+    CHECK(e.spherical_albedo() >= 0.0);
+  }
+  CHECK(LsThreeTermBrdf(0.0).mode(0, 0.3, 0.4) == 0.0);
+}
+
+TEST_CASE("ls three-term: exact identities of the constants (C1)") {
+  for (double c : {0.0, 0.1, 0.5, 0.9, 0.999999, 1.0}) {
+    const auto k = ls_three_term_constants(c);
+    CHECK(std::isfinite(k.B));
+    CHECK(k.A == doctest::Approx(69 * c / 128).epsilon(1e-15));
+    CHECK(2 * k.F - k.C == doctest::Approx(c * (20 * c * c + 281 * c - 346) / 384).epsilon(1e-13).scale(1e-16));
+    CHECK(k.l * k.l + 45 * k.m / 64 == doctest::Approx(5 * (4 * c + 9) / 64).epsilon(1e-15));
+  }
+}
+
+TEST_CASE("ls three-term: constants at c = 1 and their sqrt(1 - c) approach") {
+  const auto k1 = ls_three_term_constants(1.0);
+  // (C1) at c = 1: E = 0, 2F - C = -45/384; the linear consistency equations give C = 45/384, D = 0
+  CHECK(k1.E == 0.0);
+  CHECK(k1.C == doctest::Approx(45.0 / 384.0).epsilon(1e-13));
+  CHECK(std::abs(k1.D) < 1e-13);
+  CHECK(std::abs(k1.F) < 1e-13);
+  CHECK(k1.B == doctest::Approx(-0.0833231212514).epsilon(1e-9));  // double root; cross-checked above
+  for (double d : {1e-12, 1e-8, 1e-4}) {
+    const auto k = ls_three_term_constants(1.0 - d);
+    CHECK(std::abs(k.B - k1.B) < 10 * std::sqrt(d));
+    CHECK(std::abs(k.B - k1.B) > 0.1 * std::sqrt(d));  // and really of order sqrt(1 - c)
+    CHECK(std::abs(k.C - k1.C) < 10 * std::sqrt(d));
+  }
+}
