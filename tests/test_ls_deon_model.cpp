@@ -204,3 +204,45 @@ TEST_CASE("ls deon: phi convention: phi = 0 is back-scattering (Eq. 9, 17, 33 an
       }
   CHECK(same.median() < 0.6 * flipped.median());
 }
+
+TEST_CASE("ls deon: Sec. 3.2, the exact second multiple-scattering mode is weak (f_m^(2) ~ 0)") {
+  // the model drops f_m^(2); its size relative to the whole BRDF, over angles and c
+  double worst = 0.0;
+  for (double c : {0.3, 0.7, 1.0}) {
+    const LsThreeTermBrdf ex(c);
+    for (double mi : kMus)
+      for (double mo : kMus)
+        for (double phi : {0.0, pi / 2, pi})
+          worst = std::max(worst, std::abs(ex.multiple_mode(2, mi, mo)) / exact_hybrid(ex, mi, mo, phi));
+  }
+  MESSAGE("max |f_m^(2)| / f = " << worst);
+  CHECK(worst < 0.01);  // confirmed: below 1% of f everywhere on the grid
+  CHECK(worst > 1e-4);  // but not zero
+}
+
+TEST_CASE("ls deon: stress: extreme arguments give finite, reciprocal, non-negative values") {
+  const double mus[] = {1e-300, 1e-12, 1e-6, 0.5, 1.0 - 1e-15, 1.0};
+  const double phis[] = {0.0, pi, -pi, 1e-9, 7 * pi};
+  for (double c : {0.0, 1e-12, 0.5, 1.0 - 1e-12, 1.0}) {
+    const LsThreeTermBrdf ex(c);
+    for (double mi : mus)
+      for (double mo : mus)
+        for (double phi : phis) {
+          const double values[] = {deon_brdf(c, mi, mo, phi, LsDeonVariant::as_printed),
+                                   deon_brdf(c, mi, mo, phi, LsDeonVariant::corrected), deon_fast_brdf(c, mi, mo, phi),
+                                   ex.brdf(mi, mo, phi), exact_hybrid(ex, mi, mo, phi)};
+          for (double v : values) CHECK(std::isfinite(v));
+          CHECK(deon_brdf(c, mi, mo, phi, LsDeonVariant::corrected) ==
+                doctest::Approx(deon_brdf(c, mo, mi, phi, LsDeonVariant::corrected)).epsilon(1e-15));
+          CHECK(ex.brdf(mi, mo, phi) == doctest::Approx(ex.brdf(mo, mi, phi)).epsilon(1e-14));
+          CHECK(exact_hybrid(ex, mi, mo, phi) >= 0.0);
+          CHECK(ls_single_scattering(c, mi, mo, phi) >= 0.0);
+        }
+  }
+  CHECK_THROWS_AS(deon_brdf(1.1, 0.5, 0.5, 0.0, LsDeonVariant::corrected), std::domain_error);
+  CHECK_THROWS_AS(deon_brdf(0.5, 0.0, 0.5, 0.0, LsDeonVariant::corrected), std::domain_error);
+  CHECK_THROWS_AS(deon_brdf(0.5, 0.5, 0.5, std::nan(""), LsDeonVariant::corrected), std::domain_error);
+  CHECK_THROWS_AS(LsThreeTermBrdf(0.5).brdf(0.5, 0.5, INFINITY), std::domain_error);
+  CHECK_THROWS_AS(LsThreeTermBrdf(-0.1), std::domain_error);
+  CHECK_THROWS_AS(LsThreeTermBrdf(0.5).mode(3, 0.5, 0.5), std::domain_error);
+}

@@ -19,7 +19,8 @@ void check(double c, double mu_i, double mu_o) {
   require_open_closed("mu_o", mu_o, 0.0, 1.0, "(0, 1]");
 }
 double sin_product(double mu_i, double mu_o) {
-  return std::sqrt((1.0 - mu_i) * (1.0 + mu_i) * (1.0 - mu_o) * (1.0 + mu_o));
+  // symmetric in (mu_i, mu_o) to the last bit (reciprocity)
+  return std::sqrt(((1.0 - mu_i) * (1.0 + mu_i)) * ((1.0 - mu_o) * (1.0 + mu_o)));
 }
 }  // namespace
 

@@ -121,7 +121,8 @@ void check_angles(double mu_i, double mu_o) {
 }
 // S = sqrt((1 - mu_i^2)(1 - mu_o^2)), with 1 - mu^2 = (1 - mu)(1 + mu) (exact near mu = 1)
 double sin_product(double mu_i, double mu_o) {
-  return std::sqrt((1.0 - mu_i) * (1.0 + mu_i) * (1.0 - mu_o) * (1.0 + mu_o));
+  // symmetric in (mu_i, mu_o) to the last bit (reciprocity)
+  return std::sqrt(((1.0 - mu_i) * (1.0 + mu_i)) * ((1.0 - mu_o) * (1.0 + mu_o)));
 }
 }  // namespace
 
