@@ -128,3 +128,19 @@ TEST_CASE("ls three-term: constants at c = 1 and their sqrt(1 - c) approach") {
     CHECK(std::abs(k.C - k1.C) < 10 * std::sqrt(d));
   }
 }
+
+TEST_CASE("ls three-term: multiple scattering is O(c^2) without cancellation as c -> 0") {
+  // f_m^(k) / c^2 tends to the double-scattering limit: the values at c = 1e-6, 1e-9 and 1e-11 agree
+  // (the second-order correction is O(c)); a difference mode - single in double precision would be
+  // noise below c ~ 1e-8.
+  const LsThreeTermBrdf a(1e-6), b(1e-9), d(1e-11);
+  for (int m = 0; m <= 2; ++m)
+    for (double mi : {0.05, 0.5})
+      for (double mo : {0.3, 0.9}) {
+        const double fa = a.multiple_mode(m, mi, mo) / 1e-12, fb = b.multiple_mode(m, mi, mo) / 1e-18,
+                     fd = d.multiple_mode(m, mi, mo) / 1e-22;
+        CHECK(fb == doctest::Approx(fa).epsilon(1e-5));
+        CHECK(fd == doctest::Approx(fb).epsilon(1e-4));
+        CHECK(std::abs(fb) > 1e-4);
+      }
+}

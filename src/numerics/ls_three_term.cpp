@@ -1,5 +1,6 @@
 #include "numerics/ls_three_term.hpp"
 
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -39,59 +40,115 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 // x0 + b B + cc C + d D
+template <class T>
 struct Affine {
-  double k = 0, b = 0, cc = 0, d = 0;
+  T k = 0, b = 0, cc = 0, d = 0;
 };
-Affine operator+(Affine x, const Affine& y) { return {x.k + y.k, x.b + y.b, x.cc + y.cc, x.d + y.d}; }
-Affine operator*(double s, Affine x) { return {s * x.k, s * x.b, s * x.cc, s * x.d}; }
+template <class T>
+Affine<T> operator+(Affine<T> x, const Affine<T>& y) { return {x.k + y.k, x.b + y.b, x.cc + y.cc, x.d + y.d}; }
+template <class T>
+Affine<T> operator*(const T& s, Affine<T> x) { return {s * x.k, s * x.b, s * x.cc, s * x.d}; }
 
-void zeroth_mode_constants(double c, const std::array<double, 4>& al, LsThreeTermConstants& k) {
-  const double a0 = al[0], a1 = al[1], a2 = al[2], a3 = al[3];
-  const double c2 = c * c;
-  // d'Eon Eq. 38 (and (C1)): A = 69c/128, E = 15/128 (1-c) c (4c/3 + 3)
-  k.A = 69.0 * c / 128.0;
-  k.E = 5.0 * c * (1.0 - c) * (4.0 * c + 9.0) / 128.0;
-  if (c == 0.0) return;
-  const double P = c * (20.0 * c2 + 281.0 * c - 346.0);    // 384 x (mu^2 coefficient of Psi^(0))
-  const double U = 30.0 * c * (4.0 * c + 9.0) * (c - 1.0);  // -384 x 2 x (mu^4 coefficient)
+// B, C, D, F of the zeroth mode and dC = C - 2c/3 (C minus its single-scattering value), from the
+// moment deviations dev[n] = alpha_n - 1/(n+1) of H^(0). In the working precision T.
+// The equations cancel: as c -> 0, B and D are O(c^2) differences of O(1) terms and dC is O(c^2),
+// so T = quad precision keeps ~1e-34/c^2 relative accuracy (double would keep only 1e-16/c^2).
+template <class T>
+void zeroth_mode_solve(double c_in, const std::array<double, 4>& dev, double out[5]) {
+  const T c = c_in;
+  const T a0 = T(1) + dev[0], a1 = T(1) / 2 + dev[1], a2 = T(1) / 3 + dev[2], a3 = T(1) / 4 + dev[3];
+  const T c2 = c * c;
+  const T P = c * (20 * c2 + 281 * c - 346);    // 384 x (mu^2 coefficient of Psi^(0))
+  const T U = 30 * c * (4 * c + 9) * (c - 1);   // -384 x 2 x (mu^4 coefficient)
+  const T q768 = 768, q1536 = 1536;
   // Coefficients of q_0, q_1, q_2 (degree 2 in mu) as affine functions of B, C, D.
-  const Affine q0_1{(-P * a1 + U * a3) / 768.0, a0, a1 / 2.0, 0.0};
-  const Affine q0_2{(P * a0 - U * a2) / 768.0, 0.0, a0 / 2.0, a1};
-  const Affine q1_1{-(414.0 * a0 * c + P * a2 - 768.0) / 768.0, -a1, -a2 / 2.0, 0.0};
-  const Affine q2_1{(a1 * (P + 1242.0 * c) - a3 * c * (60.0 * c2 - 693.0 * c + 768.0)) / 1536.0,
-                    -(a0 - 3.0 * a2) / 2.0, -(a1 - 3.0 * a3) / 4.0, 0.0};
-  const Affine q2_2{-(a0 * (P + 1242.0 * c) - a2 * c * (60.0 * c2 - 693.0 * c + 768.0) - 2304.0) / 1536.0, 0.0,
-                    -(a0 - 3.0 * a2) / 4.0, -(a1 - 3.0 * a3) / 2.0};
+  const Affine<T> q0_1{(-P * a1 + U * a3) / q768, a0, a1 / 2, 0};
+  const Affine<T> q0_2{(P * a0 - U * a2) / q768, 0, a0 / 2, a1};
+  const Affine<T> q1_1{-(414 * a0 * c + P * a2 - 768) / q768, -a1, -a2 / 2, 0};
+  const Affine<T> q2_1{(a1 * (P + 1242 * c) - a3 * c * (60 * c2 - 693 * c + 768)) / q1536, -(a0 - 3 * a2) / 2,
+                       -(a1 - 3 * a3) / 4, 0};
+  const Affine<T> q2_2{-(a0 * (P + 1242 * c) - a2 * c * (60 * c2 - 693 * c + 768) - 2304) / q1536, 0,
+                       -(a0 - 3 * a2) / 4, -(a1 - 3 * a3) / 2};
   // weights (-1)^l w_l of q_l q_l^T, halved: Q = sum_l h_l q_l q_l^T
-  const double h0 = c / 2.0, h1 = 2.0 * c / 3.0, h2 = 5.0 * c / 32.0;
+  const T h0 = c / 2, h1 = 2 * c / 3, h2 = 5 * c / 32;
   // q_l(0) = 1, 0, -1/2. Entry (0,1): h0 q0_1 - h2/2 q2_1 = B  ->  C = C0 + C1 B
-  const Affine r01 = h0 * q0_1 + (-0.5 * h2) * q2_1 + Affine{0, -1, 0, 0};
-  const double C0 = -r01.k / r01.cc, C1 = -r01.b / r01.cc;
-  // Entry (0,2): h0 q0_2 - h2/2 q2_2 = F = C/2 + P/768 (C1)  ->  D = D0 + D1 C
-  const Affine r02 = h0 * q0_2 + (-0.5 * h2) * q2_2 + Affine{-P / 768.0, 0, -0.5, 0};
-  const double D0 = -(r02.k) / r02.d, D1 = -r02.cc / r02.d;  // (r02.b is 0)
+  const Affine<T> r01 = h0 * q0_1 + T(-h2 / 2) * q2_1 + Affine<T>{0, -1, 0, 0};
+  const T C0 = -r01.k / r01.cc, C1 = -r01.b / r01.cc;
+  // Entry (0,2): h0 q0_2 - h2/2 q2_2 = F = C/2 + P/768 (C1)  ->  D = D0 + D1 C  (r02.b is 0)
+  const Affine<T> r02 = h0 * q0_2 + T(-h2 / 2) * q2_2 + Affine<T>{-P / q768, 0, T(-0.5), 0};
+  const T D0 = -r02.k / r02.d, D1 = -r02.cc / r02.d;
   // q_l[1] as affine functions of B alone: u + v B
-  auto in_b = [&](const Affine& q, double& u, double& v) {
-    const double Cu = C0, Cv = C1;
-    const double Du = D0 + D1 * Cu, Dv = D1 * Cv;
-    u = q.k + q.cc * Cu + q.d * Du;
-    v = q.b + q.cc * Cv + q.d * Dv;
+  auto in_b = [&](const Affine<T>& q, T& u, T& v) {
+    u = q.k + q.cc * C0 + q.d * (D0 + D1 * C0);
+    v = q.b + q.cc * C1 + q.d * D1 * C1;
   };
-  double u0, v0, u1, v1, u2, v2;
+  T u0, v0, u1, v1, u2, v2;
   in_b(q0_1, u0, v0);
   in_b(q1_1, u1, v1);
   in_b(q2_1, u2, v2);
   // Entry (1,1): h0 q0_1^2 + h1 q1_1^2 + h2 q2_1^2 - C = qa B^2 + qb B + qc = 0
-  const double qa = h0 * v0 * v0 + h1 * v1 * v1 + h2 * v2 * v2;
-  const double qb = 2.0 * (h0 * u0 * v0 + h1 * u1 * v1 + h2 * u2 * v2) - C1;
-  const double qc = h0 * u0 * u0 + h1 * u1 * u1 + h2 * u2 * u2 - C0;
-  const double disc = std::max(0.0, qb * qb - 4.0 * qa * qc);  // 0 at c = 1 (double root)
+  const T qa = h0 * v0 * v0 + h1 * v1 * v1 + h2 * v2 * v2;
+  const T qb = 2 * (h0 * u0 * v0 + h1 * u1 * v1 + h2 * u2 * v2) - C1;
+  const T qc = h0 * u0 * u0 + h1 * u1 * u1 + h2 * u2 * u2 - C0;
+  T disc = qb * qb - 4 * qa * qc;  // 0 at c = 1 (double root)
+  if (disc < 0) disc = 0;
+  using std::sqrt;
+  using boost::multiprecision::sqrt;
   // smaller root (qa > 0), in the form without cancellation
-  const double B = qb > 0.0 ? (-qb - std::sqrt(disc)) / (2.0 * qa) : 2.0 * qc / (-qb + std::sqrt(disc));
-  k.B = B;
-  k.C = C0 + C1 * B;
-  k.D = D0 + D1 * k.C;
-  k.F = k.C / 2.0 + P / 768.0;
+  const T B = qb > 0 ? T((-qb - sqrt(disc)) / (2 * qa)) : T(2 * qc / (-qb + sqrt(disc)));
+  const T C = C0 + C1 * B;
+  out[0] = static_cast<double>(B);
+  out[1] = static_cast<double>(C);
+  out[2] = static_cast<double>(D0 + D1 * C);
+  out[3] = static_cast<double>(C / 2 + P / q768);
+  out[4] = static_cast<double>(C - 2 * c / 3);
+}
+
+void zeroth_mode_constants(double c, const std::array<double, 4>& dev, LsThreeTermConstants& k, double& dC) {
+  // d'Eon Eq. 38 (and (C1)): A = 69c/128, E = 15/128 (1-c) c (4c/3 + 3)
+  k.A = 69.0 * c / 128.0;
+  k.E = 5.0 * c * (1.0 - c) * (4.0 * c + 9.0) / 128.0;
+  dC = 0.0;
+  if (c == 0.0) return;
+  double v[5];
+  zeroth_mode_solve<boost::multiprecision::cpp_bin_float_quad>(c, dev, v);
+  k.B = v[0];
+  k.C = v[1];
+  k.D = v[2];
+  k.F = v[3];
+  dC = v[4];
+}
+
+// alpha_n - 1/(n+1) = int_0^1 (H - 1) mu^n dmu, n = 0..3, with H - 1 = expm1(log H): accurate
+// relative to itself (O(c)) as c -> 0, unlike alpha_n - 1/(n+1) formed from alpha_n.
+std::array<double, 4> moment_deviations(const FokHRow& row) {
+  static const auto rule = [] {
+    std::pair<std::vector<double>, std::vector<double>> r;
+    graded_gauss_legendre(30, 0.25, 16, r.first, r.second);
+    return r;
+  }();
+  std::array<double, 4> m{};
+  for (std::size_t j = 0; j < rule.first.size(); ++j) {
+    const double x = rule.first[j];
+    double p = rule.second[j] * std::expm1(row.log_h(x));
+    for (int n = 0; n < 4; ++n) {
+      m[n] += p;
+      p *= x;
+    }
+  }
+  return m;
+}
+
+LsThreeTermConstants constants_from_rows(double c, const FokHRow& h0, const FokHRow& h1, double& dC) {
+  LsThreeTermConstants k;
+  k.c = c;
+  // First-order mode (see the derivation above): l from the moments of H^(1); m defined by
+  // d'Eon's combination l^2 + 45 m/64, which (C1) fixes to 5 (4c + 9)/64.
+  const auto a = h_moments(h1);
+  k.l = -5.0 * c * (4.0 * c + 9.0) * (a[1] - a[3]) / (64.0 * (c * (a[0] - a[2]) + 3.0));
+  k.m = (5.0 * (4.0 * c + 9.0) - 64.0 * k.l * k.l) / 45.0;
+  zeroth_mode_constants(c, moment_deviations(h0), k, dC);
+  return k;
 }
 }  // namespace
 
@@ -100,18 +157,19 @@ LsThreeTermConstants ls_three_term_constants(double c, const std::array<double, 
   require_closed("c", c, 0.0, 1.0, "[0, 1]");
   LsThreeTermConstants k;
   k.c = c;
-  // First-order mode (see the derivation above): l from the moments of H^(1); m defined by
-  // d'Eon's combination l^2 + 45 m/64, which (C1) fixes to 5 (4c + 9)/64.
   const double a0 = alpha1[0], a1 = alpha1[1], a2 = alpha1[2], a3 = alpha1[3];
   k.l = -5.0 * c * (4.0 * c + 9.0) * (a1 - a3) / (64.0 * (c * (a0 - a2) + 3.0));
   k.m = (5.0 * (4.0 * c + 9.0) - 64.0 * k.l * k.l) / 45.0;
-  zeroth_mode_constants(c, alpha0, k);
+  const std::array<double, 4> dev{alpha0[0] - 1.0, alpha0[1] - 0.5, alpha0[2] - 1.0 / 3.0, alpha0[3] - 0.25};
+  double dC;
+  zeroth_mode_constants(c, dev, k, dC);
   return k;
 }
 
 LsThreeTermConstants ls_three_term_constants(double c) {
   require_closed("c", c, 0.0, 1.0, "[0, 1]");
-  return ls_three_term_constants(c, h_moments(HKind::ls0, c), h_moments(HKind::ls1, c));
+  double dC;
+  return constants_from_rows(c, FokHRow(HKind::ls0, c), FokHRow(HKind::ls1, c), dC);
 }
 
 namespace {
@@ -146,7 +204,7 @@ double ls_three_term_single_mode(int m, double c, double mu_i, double mu_o) {
 
 LsThreeTermBrdf::LsThreeTermBrdf(double c)
     : constants_(), h0_(HKind::ls0, c), h1_(HKind::ls1, c), h2_(HKind::ls2, c) {
-  constants_ = ls_three_term_constants(c, h_moments(h0_), h_moments(h1_));
+  constants_ = constants_from_rows(c, h0_, h1_, delta_c_);
 }
 
 double LsThreeTermBrdf::mode(int m, double mu_i, double mu_o) const {
@@ -173,7 +231,35 @@ double LsThreeTermBrdf::mode(int m, double mu_i, double mu_o) const {
 }
 
 double LsThreeTermBrdf::multiple_mode(int m, double mu_i, double mu_o) const {
-  return mode(m, mu_i, mu_o) - ls_three_term_single_mode(m, constants_.c, mu_i, mu_o);
+  // mode - single scattering, written so that nothing cancels as c -> 0 (both are O(c), the
+  // difference O(c^2)): H H - 1 = expm1(log H + log H), and the constants minus their
+  // single-scattering values (Eq. 44: A, C, E, F = 69c/128, 2c/3, 135c/384, -45c/384; B = D = 0).
+  check_angles(mu_i, mu_o);
+  const auto& k = constants_;
+  const double c = k.c, sum = mu_i + mu_o, prod = mu_i * mu_o;
+  switch (m) {
+    case 0: {
+      const double poly = k.A + k.B * sum + k.C * prod + k.D * prod * sum + k.E * prod * prod +
+                          k.F * (mu_i * mu_i + mu_o * mu_o);
+      const double d_e = -15.0 * c * c * (5.0 + 4.0 * c) / 384.0;     // E - 135c/384
+      const double d_f = delta_c_ / 2.0 + c * c * (20.0 * c + 281.0) / 768.0;  // F + 45c/384, by (C1)
+      const double d_poly = k.B * sum + delta_c_ * prod + k.D * prod * sum + d_e * prod * prod +
+                            d_f * (mu_i * mu_i + mu_o * mu_o);
+      const double hh1 = std::expm1(h0_.log_h(mu_i) + h0_.log_h(mu_o));
+      return (hh1 * poly + d_poly) / (2.0 * kPi * sum);
+    }
+    case 1: {
+      // l^2 + 45m/64 - 45/64 = 5(4c + 9)/64 - 45/64 = 5c/16 by (C1)
+      const double poly = 1.0 + (k.l * k.l + 45.0 * k.m / 64.0) * prod + k.l * sum;
+      const double hh1 = std::expm1(h1_.log_h(mu_i) + h1_.log_h(mu_o));
+      return c * sin_product(mu_i, mu_o) / (3.0 * kPi * sum) * (hh1 * poly + 5.0 * c / 16.0 * prod + k.l * sum);
+    }
+    case 2: {
+      const double s = sin_product(mu_i, mu_o);
+      return 15.0 * c * std::expm1(h2_.log_h(mu_i) + h2_.log_h(mu_o)) * s * s / (256.0 * kPi * sum);
+    }
+  }
+  throw_domain_error("m", m, "{0, 1, 2}");
 }
 
 double LsThreeTermBrdf::brdf(double mu_i, double mu_o, double phi) const {

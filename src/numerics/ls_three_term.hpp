@@ -52,7 +52,10 @@ class LsThreeTermBrdf {
   // Fourier mode m in {0, 1, 2} of the full three-term BRDF (all orders of scattering).
   // mu_i, mu_o in (0, 1].
   double mode(int m, double mu_i, double mu_o) const;
-  // Multiple-scattering part f_m^(m) = mode - ls_three_term_single_mode (Eq. 35, 45).
+  // Multiple-scattering part f_m^(m) = mode - ls_three_term_single_mode (Eq. 35, 45), evaluated
+  // without the cancellation of that difference (relative accuracy ~1e-16/c as c -> 0, limited by
+  // the absolute accuracy of log H). f_m grows like log(1/mu) at grazing; for mu < 1e-30 FokHRow
+  // returns log H = 0 and that term is lost (f_m is then off by O(log(1/mu)), f itself by ~mu).
   double multiple_mode(int m, double mu_i, double mu_o) const;
   // f(mu_i, mu_o, phi) of the three-term half space (three-term single scattering included).
   double brdf(double mu_i, double mu_o, double phi) const;
@@ -65,6 +68,7 @@ class LsThreeTermBrdf {
 
  private:
   LsThreeTermConstants constants_;
+  double delta_c_ = 0;  // C - 2c/3, accurate as c -> 0
   FokHRow h0_, h1_, h2_;
 };
 
