@@ -33,7 +33,9 @@ double deon_brdf(double c, double mu_i, double mu_o, double phi, LsDeonVariant v
 // phi in [-pi, pi] (|phi| is the paper's azimuth; phi = 0 backward).
 double deon_fast_brdf(double c, double mu_i, double mu_o, double phi);
 
-// Albedo mappings of Sec. 3.5: Eq. 46 (k_d -> c) and Eq. 47 (c -> k_d), arguments in [0, 1].
+// Albedo mappings of Sec. 3.5: Eq. 46 (k_d -> c) and Eq. 47 (c -> k_d), arguments in [0, 1], as
+// printed: Eq. 46 returns c > 1 (by < 4e-10) for k_d in (0.9988, 1) and Eq. 47 gives 0.00116 at c = 0
+// (validate/ERRATA.md); callers that feed Eq. 46 into the model must clamp.
 double deon_c_from_kd(double kd);
 double deon_kd_from_c(double c);
 
