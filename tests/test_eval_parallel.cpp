@@ -74,6 +74,7 @@ TEST_CASE("eval: parallel, chunked and spooled runs print every row in order, id
   }
   CHECK(worst == 0);
   ScopedEnv c("BRDFTAB_EVAL_CHUNK_ROWS", "8192");
+  ScopedEnv no_dynamic("OMP_DYNAMIC", "false");  // 2 threads even on a busy machine
   for (const char* spool : {"", "1000"}) {  // spools in memory, then in temporary files
     ScopedEnv t("OMP_NUM_THREADS", "2");
     ScopedEnv s("BRDFTAB_EVAL_SPOOL_BYTES", *spool ? spool : "8388608");

@@ -124,7 +124,7 @@ TEST_CASE("convergence order: halving the spacing divides the error by ~4 (linea
   }
 }
 
-TEST_CASE("grid values are returned at grid points (to rounding of the grid coordinate); float32 rounds once") {
+TEST_CASE("grid values are returned at grid points (to rounding of the grid coordinate), float32 rounds once") {
   const std::vector<Axis> axes = {make_axis("x", Transform::identity, 0.0, 1.0, 11)};
   auto f = [](const double* x) { return std::exp(x[0]) + 0.1; };  // no value is a float32
   const Table t64 = make_table(axes, f, Storage::float64, Interpolation::cubic);
@@ -165,7 +165,7 @@ TEST_CASE("out-of-domain and NaN queries: clamp or error, never undefined") {
 
 // (Log axes: the batched path's vector log may differ from std::log in the last bit; that
 // bound is tested in test_lookup_simd.cpp.)
-TEST_CASE("batched queries equal scalar queries; concurrent queries from many threads agree") {
+TEST_CASE("batched queries equal scalar queries, concurrent queries from many threads agree") {
   const std::vector<Axis> axes = {make_axis("x", Transform::x_over_k_plus_x, 0.1, 10.0, 20, 1.5),
                                   make_axis("y", Transform::identity, 0.0, 1.0, 30),
                                   make_axis("z", Transform::sqrt, 0.0, 2.0, 10)};

@@ -159,7 +159,7 @@ TEST_CASE("batched lookups on log axes: within the bound set by the vector log's
 }
 
 #if defined(__x86_64__)
-TEST_CASE("vector transforms: log within 1 ulp of long double logl; the others bit-identical to apply_transform") {
+TEST_CASE("vector transforms: log within 1 ulp of long double logl, the others bit-identical to apply_transform") {
   if (!detail::cpu_has_avx2()) return;
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> expo(-1020.0, 1020.0), near1(-1e-3, 1e-3), uni(0.0, 1.0);

@@ -245,6 +245,11 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
     param_of_column[it->second] = static_cast<int>(i);
   }
 
+  // On a shared machine, fork-join over busy cores costs more than it gains (a descheduled
+  // thread stalls every chunk): unless OMP_DYNAMIC says otherwise, let the OpenMP runtime
+  // size each team from the free cores (libgomp: online CPUs minus the load average).
+  if (!std::getenv("OMP_DYNAMIC")) omp_set_dynamic(1);
+
   try {
     // Pass 1: read, check, spool.
     Spool spool_in(spool_memory());
