@@ -136,7 +136,7 @@ TEST_CASE("eval: bad rows exit 2 naming the row, the column, the value and the d
   CHECK(r.err.find("/nonexistent") != std::string::npos);
 }
 
-TEST_CASE("info describes shape, axes, storage, errors and provenance; a corrupt file is an error") {
+TEST_CASE("info describes shape, axes, storage, errors and provenance, a corrupt file is an error") {
   const auto r = run_cli("info '" + (demo_tables() / "demo.h5").string() + "'");
   REQUIRE(r.status == 0);
   for (const char* s : {"dataset: demo_exp_cos", "shape: 129 x 33", "storage: float64", "transform x/(k+x)",

@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 using brdftab::testing::contains;
 using brdftab::testing::run_cli;
 
-TEST_CASE("usage errors exit 2 with a message; --help and --version exit 0") {
+TEST_CASE("usage errors exit 2 with a message, --help and --version exit 0") {
   const auto unknown = run_cli("frobnicate");
   CHECK(unknown.status == 2);
   CHECK(!unknown.err.empty());

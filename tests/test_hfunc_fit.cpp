@@ -37,7 +37,7 @@ TEST_CASE("hfunc fit: Eq. 37 for H^(0) is within the claimed 1% (confirmed)") {
   CHECK(e.value > 0.005);  // and not much better: the claim is tight (~0.8% near c = 1)
 }
 
-TEST_CASE("hfunc fit: Eq. 28-30 for H^(1) as printed fail (erratum); the corrected reading is within 0.5%") {
+TEST_CASE("hfunc fit: Eq. 28-30 for H^(1) as printed fail (erratum), the corrected reading is within 0.5%") {
   // As printed, Eq. 28 gives H(0) = H^(1)(1) != 1, violating H(0) = 1 (Eq. 20).
   CHECK(deon_h1_fit_as_printed(1.0, 0.0) == doctest::Approx(std::exp(0.0242851 - 0.144839)));
   const auto printed = max_fit_error(HKind::ls1, deon_h1_fit_as_printed);

@@ -40,7 +40,7 @@ TEST_CASE("hfunc: methods 1 and 2 agree to 1e-12 on a grid with the hard corners
   MESSAGE("max |H_fok / H_nystrom - 1| = " << worst);
 }
 
-TEST_CASE("hfunc: method 1 converges in its step; method 2 in its quadrature") {
+TEST_CASE("hfunc: method 1 converges in its step, method 2 in its quadrature") {
   FokOptions fine;
   fine.step = 0.1;
   NystromOptions finer;
@@ -128,7 +128,7 @@ TEST_CASE("hfunc: isotropic moment identities for all c") {
   }
 }
 
-TEST_CASE("hfunc: moments of methods 1 and 2 agree; c = 0 gives H = 1") {
+TEST_CASE("hfunc: moments of methods 1 and 2 agree, c = 0 gives H = 1") {
   for (HKind kind : kAllKinds)
     for (double c : {0.0, 0.6, 1.0}) {
       const auto m1 = h_moments(kind, c);

@@ -137,7 +137,7 @@ TEST_CASE("hfunc cli: moments") {
   CHECK(r2.out.find("2,0,1,0.5,0.33333333333333") != std::string::npos);
 }
 
-TEST_CASE("hfunc cli: no fit for mode 2 or the isotropic H; bad input exits 2 naming row, column, value, domain") {
+TEST_CASE("hfunc cli: no fit for mode 2 or the isotropic H, bad input exits 2 naming row, column, value, domain") {
   auto r = run_cli("eval h_ls --method fit", "mode,c,mu\n2,0.5,0.5\n");
   CHECK(r.status == 2);
   CHECK(r.err.find("no fit exists for H^(2)") != std::string::npos);
@@ -149,7 +149,7 @@ TEST_CASE("hfunc cli: no fit for mode 2 or the isotropic H; bad input exits 2 na
     const char* expect;
   };
   for (const Bad& b : {Bad{"mode,c,mu\n0,0.5,0.5\n1,1.5,0.5\n", "row 2 (line 3), column 'c': value '1.5' is outside the valid domain [0, 1]"},
-                       Bad{"mode,c,mu\n1,0.5,-0.25\n", "column 'mu': value '-0.25' is outside the valid domain [0, inf]"},
+                       Bad{"mode,c,mu\n1,0.5,-0.25\n", "column 'mu': value '-0.25' is outside the valid domain [0, 1e20] or inf"},
                        Bad{"mode,c,mu\n3,0.5,0.5\n", "column 'mode': value '3' is outside the valid domain {0, 1, 2}"},
                        Bad{"mode,c,mu\n0.5,0.5,0.5\n", "column 'mode': value '0.5'"},
                        Bad{"mode,c,mu\n1,nan,0.5\n", "column 'c': value 'nan' is not a number"},

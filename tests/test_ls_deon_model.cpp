@@ -220,7 +220,7 @@ TEST_CASE("ls deon: Sec. 3.2, the exact second multiple-scattering mode is weak 
   CHECK(worst > 1e-4);  // but not zero
 }
 
-TEST_CASE("ls deon: stress: extreme arguments give finite, reciprocal values; grazing forward scattering") {
+TEST_CASE("ls deon: stress: extreme arguments give finite, reciprocal values, grazing forward scattering") {
   const double mus[] = {1e-300, 1e-12, 1e-6, 0.5, 1.0 - 1e-15, 1.0};
   const double phis[] = {0.0, pi, -pi, 1e-9, 7 * pi};
   for (double c : {0.0, 1e-12, 0.5, 1.0 - 1e-12, 1.0}) {

@@ -87,7 +87,7 @@ TEST_CASE("ls phase: Legendre coefficients, closed form vs the printed Eq. 4 and
   CHECK_THROWS_AS(ls_phase_legendre_coefficients(-1), std::domain_error);
 }
 
-TEST_CASE("ls phase: Eq. 5 is the three-term truncation; its largest deviation from Eq. 1") {
+TEST_CASE("ls phase: Eq. 5 is the three-term truncation, its largest deviation from Eq. 1") {
   double worst = 0.0, where = 0.0;
   for (int i = 0; i <= 20000; ++i) {
     const double u = -1.0 + i / 10000.0;

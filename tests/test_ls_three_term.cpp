@@ -34,7 +34,7 @@ double single_mode_by_quadrature(int m, double c, double mu_i, double mu_o) {
 }
 }  // namespace
 
-TEST_CASE("ls three-term: single-scattering modes vs quadrature of Eq. 5 in Eq. 17; Eq. 34 is off by 2") {
+TEST_CASE("ls three-term: single-scattering modes vs quadrature of Eq. 5 in Eq. 17, Eq. 34 is off by 2") {
   for (double c : {0.3, 1.0})
     for (double mi : {0.01, 0.4, 1.0})
       for (double mo : {0.02, 0.5, 0.9})
@@ -89,7 +89,7 @@ TEST_CASE("ls three-term: c = 1 (conservative): modes vs the invariance solver, 
   CHECK(exact.spherical_albedo() == doctest::Approx(1.0).epsilon(1e-12));
 }
 
-TEST_CASE("ls three-term: c -> 0 reduces to single scattering; albedo < 1 for c < 1") {
+TEST_CASE("ls three-term: c -> 0 reduces to single scattering, albedo < 1 for c < 1") {
   const double c = 1e-6;
   const LsThreeTermBrdf exact(c);
   for (double mi : {0.01, 0.5, 1.0})

@@ -53,7 +53,7 @@ TEST_CASE("smith_gbeckmann: D is normalized (Eq. 38-39): hemisphere integral of 
   }
 }
 
-TEST_CASE("smith_gbeckmann: P2 of Eq. 9 integrates to 1; the printed Eq. 40 to 1/2") {
+TEST_CASE("smith_gbeckmann: P2 of Eq. 9 integrates to 1, the printed Eq. 40 to 1/2") {
   for (double p : {0.25, 0.5, 1.0, 2.0, 4.0}) {
     // Eq. 9 from P22 of Eq. 39 (beta = 1) directly, over the whole line, in the test.
     const auto p2_eq9 = [&](double r) {

@@ -54,7 +54,7 @@ TEST_CASE("smith_gbeckmann sampling: the tan^2 CDF equals the integral of D cos 
   }
 }
 
-TEST_CASE("smith_gbeckmann sampling: corrected Eq. 59 passes Kolmogorov-Smirnov; the printed exponent fails") {
+TEST_CASE("smith_gbeckmann sampling: corrected Eq. 59 passes Kolmogorov-Smirnov, the printed exponent fails") {
   std::mt19937_64 rng(20240611);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (double beta : {0.05, 0.5}) {
