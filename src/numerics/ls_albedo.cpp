@@ -1,0 +1,140 @@
+#include "numerics/ls_albedo.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/special_functions/legendre.hpp>
+#include <boost/math/tools/roots.hpp>
+
+#include "numerics/domain_check.hpp"
+#include "numerics/ls_legendre.hpp"
+
+namespace brdftab::numerics {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+using GK = boost::math::quadrature::gauss_kronrod<double, 31>;
+
+// 2 int_0^pi p(-(mu mu0 + s s0 cos phi)) dphi (Eq. 1, 9, 17: azimuthal integral of the
+// single-scattering phase function).
+double azimuthal_phase(double mu, double mu0) {
+  const double s = std::sqrt((1 - mu) * (1 + mu)), s0 = std::sqrt((1 - mu0) * (1 + mu0));
+  auto g = [&](double phi) {
+    const double u = std::clamp(-(mu * mu0 + s * s0 * std::cos(phi)), -1.0, 1.0);
+    return ls_phase_eq1(u);
+  };
+  return 2.0 * GK::integrate(g, 0.0, kPi, 15, 1e-15);
+}
+}  // namespace
+
+// A_single(mu0) = c int_0^1 mu / (mu + mu0) [int_0^2pi p dphi] dmu  (Eq. 17 integrated).
+double ls_single_albedo_exact(double c, double mu0) {
+  require_closed("c", c, 0.0, 1.0, "[0, 1]");
+  require_open_closed("mu", mu0, 0.0, 1.0, "(0, 1]");
+  auto h = [&](double mu) { return mu / (mu + mu0) * azimuthal_phase(mu, mu0); };
+  double v = GK::integrate(h, 0.0, mu0, 15, 1e-15);
+  if (mu0 < 1) v += GK::integrate(h, mu0, 1.0, 15, 1e-15);
+  return c * v;
+}
+
+// m = 0 term of Eq. 2 + addition theorem: (c / 2) int_0^1 mu / (mu + mu0)
+//   sum_k (-1)^k A_k P_k(mu) P_k(mu0) dmu.
+double ls_single_albedo_legendre(double c, double mu0, const std::vector<double>& a) {
+  require_closed("c", c, 0.0, 1.0, "[0, 1]");
+  require_open_closed("mu", mu0, 0.0, 1.0, "(0, 1]");
+  std::vector<double> coef(a.size());
+  for (std::size_t k = 0; k < a.size(); ++k)
+    coef[k] = ((k % 2) ? -1.0 : 1.0) * a[k] * boost::math::legendre_p(int(k), mu0);
+  auto h = [&](double mu) {
+    double p0 = 1, p1 = mu, s = coef[0] + (a.size() > 1 ? coef[1] * mu : 0.0);
+    for (std::size_t k = 2; k < a.size(); ++k) {
+      const double p2 = ((2.0 * k - 1) * mu * p1 - (k - 1.0) * p0) / double(k);
+      s += coef[k] * p2;
+      p0 = p1;
+      p1 = p2;
+    }
+    return mu / (mu + mu0) * s;
+  };
+  double v = GK::integrate(h, 0.0, mu0, 15, 1e-15);
+  if (mu0 < 1) v += GK::integrate(h, mu0, 1.0, 15, 1e-15);
+  return 0.5 * c * v;
+}
+
+LsAlbedo::LsAlbedo(double c, int L, const AmbartsumianOptions& o)
+    : c_(c), a_(ls_legendre_closed_form(L)), mode_(c, a_, 0, o) {
+  // k_d = 2 int A mu dmu = 2 int [-d_1(mu) + mu (A_single,true - A_single,trunc)] dmu.
+  int row1 = -1;
+  for (std::size_t i = 0; i < mode_.degrees().size(); ++i)
+    if (mode_.degrees()[i] == 1) row1 = int(i);
+  const auto& x = mode_.nodes();
+  const auto& w = mode_.weights();
+  double s = 0;
+  for (std::size_t j = 0; j < x.size(); ++j) s += -2.0 * w[j] * mode_.node_deviation(row1, int(j));
+  // the truncation correction of the single-scattering part is smooth and tiny:
+  // 3 panels of 20-point Gauss.
+  using Rule = boost::math::quadrature::gauss<double, 20>;
+  double corr = 0;
+  if (c > 0) {
+    auto g = [&](double mu) {
+      return 2.0 * mu * (ls_single_albedo_exact(c, mu) - ls_single_albedo_legendre(c, mu, a_));
+    };
+    corr = Rule::integrate(g, 0.0, 0.1) + Rule::integrate(g, 0.1, 0.4) + Rule::integrate(g, 0.4, 1.0);
+  }
+  kd_ = s + corr;
+}
+
+double LsAlbedo::plane(double mu) const {
+  std::vector<double> d;
+  mode_.deviations(mu, d);
+  int row1 = 0;
+  for (std::size_t i = 0; i < mode_.degrees().size(); ++i)
+    if (mode_.degrees()[i] == 1) row1 = int(i);
+  const double a_trunc = -d[row1] / mu;
+  return a_trunc - ls_single_albedo_legendre(c_, mu, a_) + ls_single_albedo_exact(c_, mu);
+}
+
+double LsAlbedo::plane_by_integration(double mu0) const {
+  std::vector<double> d0;
+  mode_.deviations(mu0, d0);
+  const auto& b = mode_.coefficients_b();
+  const auto& x = mode_.nodes();
+  const auto& w = mode_.weights();
+  const int K = int(b.size());
+  std::vector<double> l0(K);
+  for (int i = 0; i < K; ++i) l0[i] = mode_.lambda(mu0, i);
+  double s = 0;
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    double f = 0;
+    for (int i = 0; i < K; ++i) {
+      const double dj = mode_.node_deviation(i, int(j)), lj = mode_.node_lambda(i, int(j));
+      f += b[i] * (dj * l0[i] + lj * d0[i] + dj * d0[i]);
+    }
+    s += w[j] * 2 * kPi * x[j] * f / (x[j] + mu0);
+  }
+  return s + ls_single_albedo_exact(c_, mu0);
+}
+
+double ls_kd(double c) {
+  require_closed("c", c, 0.0, 1.0, "[0, 1]");
+  if (c == 0) return 0;
+  return LsAlbedo(c).spherical();
+}
+
+double ls_c_from_kd(double kd) {
+  require_closed("kd", kd, 0.0, 1.0, "[0, 1]");
+  if (kd == 0) return 0;
+  if (kd == 1) return 1;
+  // k_d decreases from 1 (s = 0) to 0 (s = 1) with s = sqrt(1 - c): near c = 1 the
+  // mapping c -> k_d has infinite slope, in s it is regular.
+  auto f = [&](double s) { return ls_kd(1 - s * s) - kd; };
+  std::uintmax_t it = 60;
+  const auto r = boost::math::tools::toms748_solve(f, 0.0, 1.0, 1.0 - kd, -kd,
+                                                   boost::math::tools::eps_tolerance<double>(44), it);
+  const double s = 0.5 * (r.first + r.second);
+  return 1 - s * s;
+}
+
+}  // namespace brdftab::numerics
