@@ -63,16 +63,18 @@ double ls_single_albedo_legendre(double c, double mu0, const std::vector<double>
   return 0.5 * c * v;
 }
 
-LsAlbedo::LsAlbedo(double c, int L, const AmbartsumianOptions& o)
+LsAlbedo::LsAlbedo(double c, int L, const DomOptions& o)
     : c_(c), a_(ls_legendre_closed_form(L)), mode_(c, a_, 0, o) {
-  // k_d = 2 int A mu dmu = 2 int [-d_1(mu) + mu (A_single,true - A_single,trunc)] dmu.
-  int row1 = -1;
-  for (std::size_t i = 0; i < mode_.degrees().size(); ++i)
-    if (mode_.degrees()[i] == 1) row1 = int(i);
+  // k_d = 2 int A mu dmu = 2 int [-d_1(mu) + mu (A_single,true - A_single,trunc)] dmu,
+  // the first part on the solver's own nodes (graded Gauss, exact for the mu log mu end).
   const auto& x = mode_.nodes();
   const auto& w = mode_.weights();
+  std::vector<double> d;
   double s = 0;
-  for (std::size_t j = 0; j < x.size(); ++j) s += -2.0 * w[j] * mode_.node_deviation(row1, int(j));
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    mode_.deviations(x[j], d);
+    s += -2.0 * w[j] * d[1];
+  }
   // the truncation correction of the single-scattering part is smooth and tiny:
   // 3 panels of 20-point Gauss.
   using Rule = boost::math::quadrature::gauss<double, 20>;
@@ -89,31 +91,15 @@ LsAlbedo::LsAlbedo(double c, int L, const AmbartsumianOptions& o)
 double LsAlbedo::plane(double mu) const {
   std::vector<double> d;
   mode_.deviations(mu, d);
-  int row1 = 0;
-  for (std::size_t i = 0; i < mode_.degrees().size(); ++i)
-    if (mode_.degrees()[i] == 1) row1 = int(i);
-  const double a_trunc = -d[row1] / mu;
+  const double a_trunc = -d[1] / mu;  // psi_1 = mu (1 - A): d_1 = psi_1 - mu = -mu A
   return a_trunc - ls_single_albedo_legendre(c_, mu, a_) + ls_single_albedo_exact(c_, mu);
 }
 
 double LsAlbedo::plane_by_integration(double mu0) const {
-  std::vector<double> d0;
-  mode_.deviations(mu0, d0);
-  const auto& b = mode_.coefficients_b();
   const auto& x = mode_.nodes();
   const auto& w = mode_.weights();
-  const int K = int(b.size());
-  std::vector<double> l0(K);
-  for (int i = 0; i < K; ++i) l0[i] = mode_.lambda(mu0, i);
   double s = 0;
-  for (std::size_t j = 0; j < x.size(); ++j) {
-    double f = 0;
-    for (int i = 0; i < K; ++i) {
-      const double dj = mode_.node_deviation(i, int(j)), lj = mode_.node_lambda(i, int(j));
-      f += b[i] * (dj * l0[i] + lj * d0[i] + dj * d0[i]);
-    }
-    s += w[j] * 2 * kPi * x[j] * f / (x[j] + mu0);
-  }
+  for (std::size_t j = 0; j < x.size(); ++j) s += w[j] * 2 * kPi * x[j] * mode_.f_multiple(x[j], mu0);
   return s + ls_single_albedo_exact(c_, mu0);
 }
 

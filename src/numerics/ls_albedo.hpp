@@ -7,10 +7,11 @@
 //   method 1 (flux identity): for m = 0, psi_1(mu) = mu (1 - A_trunc(mu)), so
 //            A_trunc(mu) = -d_1(mu) / mu and A_multiple = A_trunc - A_single(truncated p);
 //   method 2 (direct): A_multiple(mu0) = 2 pi int_0^1 f_0,ms(mu, mu0) mu dmu on the nodes.
+// The m = 0 mode comes from ls_dom_eigen (robust for 1 - c down to 0).
 // A_single(true p) (d'Eon Eq. 17 integrated) by nested adaptive Gauss-Kronrod quadrature.
 #include <vector>
 
-#include "numerics/ls_ambartsumian.hpp"
+#include "numerics/ls_dom_eigen.hpp"
 
 namespace brdftab::numerics {
 
@@ -21,16 +22,16 @@ double ls_single_albedo_legendre(double c, double mu, const std::vector<double>&
 
 class LsAlbedo {
  public:
-  explicit LsAlbedo(double c, int legendre_order = 48, const AmbartsumianOptions& options = {});
+  explicit LsAlbedo(double c, int legendre_order = 64, const DomOptions& options = {});
   double plane(double mu) const;                  // method 1
   double plane_by_integration(double mu) const;   // method 2
   double spherical() const { return kd_; }
-  const LsAmbartsumianMode& mode0() const { return mode_; }
+  const LsDomMode& mode0() const { return mode_; }
 
  private:
   double c_;
   std::vector<double> a_;
-  LsAmbartsumianMode mode_;
+  LsDomMode mode_;
   double kd_ = 0;
 };
 

@@ -50,11 +50,15 @@ LsDomMode::LsDomMode(double c, const std::vector<double>& coefficients, int m, c
   if (m < 0) throw std::invalid_argument("LsDomMode: m must be >= 0");
   lmax_ = std::max(int(a_.size()) - 1, m);
   a_.resize(lmax_ + 1, 0.0);
+  // The top panel must integrate products Lambda_k Lambda_l (degree 2L) against the smooth
+  // field: L/2 + 16 points (measured: fewer points give ~1e-6 errors at L = 48).
+  const int top = o.top_points > 0 ? o.top_points : std::max(o.points, lmax_ / 2 + 16);
   double hi = 1.0;
   std::vector<double> bounds{1.0};
   for (int p = 1; p < o.panels; ++p) bounds.push_back(hi *= o.ratio);
   bounds.push_back(0.0);
-  for (int p = int(bounds.size()) - 1; p > 0; --p) ls_gauss_legendre(o.points, bounds[p], bounds[p - 1], mu_, w_);
+  for (int p = int(bounds.size()) - 1; p > 0; --p)
+    ls_gauss_legendre(p == 1 ? top : o.points, bounds[p], bounds[p - 1], mu_, w_);
   const int N = int(mu_.size()), K = lmax_ - m + 1;
   lam_.resize(K, N);
   std::vector<double> tmp(K);
@@ -90,17 +94,55 @@ LsDomMode::LsDomMode(double c, const std::vector<double>& coefficients, int m, c
   std::vector<int> idx(2 * N);
   std::iota(idx.begin(), idx.end(), 0);
   std::sort(idx.begin(), idx.end(), [&](int p, int q) { return lre(p) < lre(q); });
-  const bool critical = (c == 1.0 && m == 0 && a_[0] == 1.0);
-  const int ndecay = critical ? N - 1 : N;
+  // Near the critical case (m = 0, A_0 = 1, 1 - c <= 1e-2) the decaying/growing pair
+  // +-k_1 -> 0 (k_1 ~ sqrt(3 (1 - c) (1 - g))) is nearly degenerate and its eigenvectors
+  // from the 2N x 2N problem lose ~ eps ||A|| / k_1; at c = 1 it is a Jordan block. We keep
+  // the N - 1 most negative eigenvalues and compute the diffusion mode separately from the
+  // sum/difference form u = I+ + I-, v = I+ - I-:
+  //   -k u = P v, -k v = Q u,  P = M^-1 (I - K1 + K2), Q = M^-1 (I - E), E = K1 + K2,
+  // so (1 - c) / k^2 is the dominant eigenvalue of Z = (1 - c) Q^-1 P^-1. E = c E0 with
+  // E0 1 = 1 and w^T E0 = w^T (the quadrature integrates the kernel exactly), so with
+  // Pi = 1 w^T / (w^T 1):  (1 - c)(I - c E0)^-1 = (1 - c)(I - c E0 + Pi)^-1
+  //                                               + Pi (1 - (1 - c) / (2 - c)),
+  // which has no 1/(1 - c): Z is well conditioned for every c, including c = 1 where it
+  // is rank one with eigenvector u = 1 (the constant solution) and k = 0.
+  const bool near_critical = (m == 0 && a_[0] == 1.0 && 1.0 - c <= 1e-2);
+  const int ndecay = near_critical ? N - 1 : N;
   Eigen::MatrixXd V(2 * N, N);
   k_.resize(N);
   for (int a = 0; a < ndecay; ++a) {
     V.col(a) = es.eigenvectors().col(idx[a]).real();
     k_(a) = -lre(idx[a]);
   }
-  if (critical) {  // constant solution I = 1 (bounded, k = 0)
-    V.col(N - 1).setOnes();
-    k_(N - 1) = 0.0;
+  if (near_critical) {
+    Eigen::MatrixXd E0 = (K1 + K2) / c;
+    Eigen::VectorXd wv = Eigen::Map<const Eigen::VectorXd>(w_.data(), N);
+    Eigen::MatrixXd Pi = Eigen::VectorXd::Ones(N) * wv.transpose() / wv.sum();
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu_b(I - c * E0 + Pi);
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu_p(I - K1 + K2);
+    Eigen::VectorXd mu = Eigen::Map<const Eigen::VectorXd>(mu_.data(), N);
+    const double pifac = 1.0 - (1.0 - c) / (2.0 - c);
+    auto Z = [&](const Eigen::VectorXd& x) {
+      Eigen::VectorXd y = mu.cwiseProduct(lu_p.solve(mu.cwiseProduct(x)));  // M P^-1 x
+      return Eigen::VectorXd((1.0 - c) * lu_b.solve(y) + Pi * y * pifac);
+    };
+    Eigen::VectorXd u = Eigen::VectorXd::Ones(N);
+    double lambda = 0;
+    for (int it = 0; it < 500; ++it) {
+      Eigen::VectorXd z = Z(u);
+      const double nl = z.norm() / u.norm();
+      const double rel = std::abs(nl - lambda);
+      lambda = nl;
+      u = z / z.norm();
+      if (it > 3 && rel <= 1e-16 * nl) break;
+    }
+    // Rayleigh-type refinement of lambda along u
+    lambda = u.dot(Z(u)) / u.dot(u);
+    const double k1 = std::sqrt((1.0 - c) / lambda);
+    Eigen::VectorXd v = -k1 * lu_p.solve(mu.cwiseProduct(u));  // v = -k P^-1 u
+    V.col(N - 1).head(N) = 0.5 * (u + v);
+    V.col(N - 1).tail(N) = 0.5 * (u - v);
+    k_(N - 1) = k1;
   }
   Eigen::MatrixXd vp = V.topRows(N), vm = V.bottomRows(N);
   vminus_inv_ = vm.inverse();

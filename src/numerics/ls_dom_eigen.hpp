@@ -20,8 +20,9 @@
 // and f_m at two arbitrary cosines follows from the invariance form
 //   (mu + mu0) f_m(mu, mu0) = sum_k b_k psi_k(mu) psi_k(mu0),
 //   psi_k(mu) = Lambda_k(mu) + 2 pi (-1)^k mu sum_l w_l f_m(mu, mu_l) Lambda_k(mu_l).
-// Critical case c = 1, m = 0: the pair of eigenvalues +-k -> 0 becomes a Jordan block; the
-// bounded solutions are the N - 1 decaying ones plus the constant I = 1, used explicitly.
+// Critical and near-critical case (m = 0, 1 - c <= 1e-2): the pair of eigenvalues +-k_1 -> 0
+// (a Jordan block at c = 1) is replaced by the diffusion mode computed from a matrix with
+// the 1/(1 - c) factored out analytically (see the .cpp); at c = 1 it is the constant I = 1.
 #include <vector>
 
 #include <Eigen/Dense>
@@ -29,9 +30,10 @@
 namespace brdftab::numerics {
 
 struct DomOptions {
-  int points = 48;      // Gauss points per panel
-  int panels = 3;       // panels [0, r^(P-1)], ..., [r, 1] on each hemisphere
-  double ratio = 0.1;   // r
+  int points = 24;      // Gauss points per panel
+  int panels = 7;       // panels [0, r^(P-1)], ..., [r, 1] on each hemisphere
+  double ratio = 0.05;  // r (7 panels of ratio 0.05: isotropic f to 1e-12 down to mu = 1e-12)
+  int top_points = 0;   // Gauss points on the top panel [r, 1] (0: max(points, L/2 + 16))
 };
 
 // Gauss-Legendre nodes/weights on [a, b] by Newton on the three-term recurrence.

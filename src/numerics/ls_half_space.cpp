@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "numerics/domain_check.hpp"
+#include "numerics/ls_assoc_legendre.hpp"
 #include "numerics/ls_legendre.hpp"
 
 namespace brdftab::numerics {
@@ -28,13 +29,15 @@ LsHalfSpace::LsHalfSpace(double c, const LsHalfSpaceOptions& o) : c_(c) {
   require_closed("c", c, 0.0, 1.0, "[0, 1]");
   a_ = o.coefficients.empty() ? ls_legendre_closed_form(o.legendre_order) : o.coefficients;
   const int L = int(a_.size()) - 1;
+  lmax_ = L;
   // probe directions for the mode cut-off
   const double probe[] = {0.02, 0.2, 0.5, 0.9, 1.0};
   double scale = 0;
   int small_run = 0;
   for (int m = 0; m <= std::min(L, o.max_modes - 1); ++m) {
     modes_.emplace_back(c, a_, m, o.solver);
-    offset_.push_back(m == 0 ? 0 : offset_.back() + modes_[m - 1].degrees().size());
+    offset_.push_back(m == 0 ? 0 : offset_.back() + std::size_t(L - m + 2));
+    for (int k = m; k <= L; ++k) b_.push_back(c * ((k % 2) ? -1.0 : 1.0) * a_[k] / (4 * kPi));
     double mx = 0;
     for (double x : probe)
       for (double y : probe) mx = std::max(mx, std::abs(modes_[m].f_multiple(x, y)));
@@ -45,7 +48,7 @@ LsHalfSpace::LsHalfSpace(double c, const LsHalfSpaceOptions& o) : c_(c) {
       small_run = 0;
     }
   }
-  offset_.push_back(offset_.back() + modes_.back().degrees().size());
+  offset_.push_back(offset_.back() + std::size_t(L - int(modes_.size()) + 2));
 }
 
 void LsHalfSpace::direction(double mu, Direction& out) const {
@@ -56,11 +59,8 @@ void LsHalfSpace::direction(double mu, Direction& out) const {
   std::vector<double> d;
   for (std::size_t m = 0; m < modes_.size(); ++m) {
     modes_[m].deviations(mu, d);
-    const auto& k = modes_[m].degrees();
-    for (std::size_t i = 0; i < k.size(); ++i) {
-      out.dev[offset_[m] + i] = d[i];
-      out.lam[offset_[m] + i] = modes_[m].lambda(mu, int(i));
-    }
+    ls_assoc_legendre(int(m), lmax_, mu, out.lam.data() + offset_[m]);
+    for (std::size_t i = 0; i < d.size(); ++i) out.dev[offset_[m] + i] = d[i];
   }
 }
 
@@ -71,10 +71,9 @@ LsHalfSpace::Direction LsHalfSpace::direction(double mu) const {
 }
 
 double LsHalfSpace::f_multiple_mode(int m, const Direction& a, const Direction& b) const {
-  const auto& bk = modes_[m].coefficients_b();
   double s = 0;
-  for (std::size_t i = 0, o = offset_[m]; i < bk.size(); ++i, ++o)
-    s += bk[i] * (a.dev[o] * b.lam[o] + a.lam[o] * b.dev[o] + a.dev[o] * b.dev[o]);
+  for (std::size_t o = offset_[m]; o < offset_[m + 1]; ++o)
+    s += b_[o] * (a.dev[o] * b.lam[o] + a.lam[o] * b.dev[o] + a.dev[o] * b.dev[o]);
   return s / (a.mu + b.mu);
 }
 

@@ -7,22 +7,23 @@
 // phi = phi_o - phi_i between the outward vectors, phi = 0 = back-scatter side
 // (convention derived in ls_ambartsumian.hpp). The multiple-scattering modes come from the
 // Legendre-truncated phase function (order L, converged: the error of the multiple part
-// decays much faster than A_k ~ k^-4) solved per mode by ls_ambartsumian (method B).
+// decays much faster than A_k ~ k^-4) solved per mode by ls_dom_eigen (method A; method B,
+// ls_ambartsumian, is the independent check in the tests).
 //
 // Use: one LsHalfSpace per c (one solve per material); direction(mu) caches everything
 // that depends on one cosine; f_multiple(dir_i, dir_o, phi) is then O(modes x degrees).
 #include <vector>
 
-#include "numerics/ls_ambartsumian.hpp"
+#include "numerics/ls_dom_eigen.hpp"
 
 namespace brdftab::numerics {
 
 struct LsHalfSpaceOptions {
-  int legendre_order = 48;         // L: phase function truncated at A_L for the multiple part
+  int legendre_order = 64;         // L: phase function truncated at A_L for the multiple part
   int max_modes = 48;              // hard cap on Fourier modes
   double mode_tolerance = 1e-12;   // stop when two successive modes are below this (relative)
   std::vector<double> coefficients;  // empty: LS closed form A_0..A_L; else these (e.g. {1})
-  AmbartsumianOptions solver;
+  DomOptions solver;
 };
 
 // Exact single scattering, d'Eon Eq. 17 with Eq. 1 (no truncation). Throws on bad input.
@@ -47,13 +48,15 @@ class LsHalfSpace {
 
   double c() const { return c_; }
   int modes() const { return int(modes_.size()); }
-  const LsAmbartsumianMode& mode(int m) const { return modes_[m]; }
+  const LsDomMode& mode(int m) const { return modes_[m]; }
   const std::vector<double>& coefficients() const { return a_; }
 
  private:
   double c_;
   std::vector<double> a_;
-  std::vector<LsAmbartsumianMode> modes_;
+  int lmax_ = 0;
+  std::vector<LsDomMode> modes_;
+  std::vector<double> b_;            // per mode, per degree k = m..L: c (-1)^k A_k / (4 pi)
   std::vector<std::size_t> offset_;  // start of mode m in Direction vectors
 };
 

@@ -1,0 +1,174 @@
+// Exact half-space BRDF of the Lambertian-sphere medium: method A (discrete ordinates,
+// eigen-solution) against method B (Ambartsumian / Nystrom), the isotropic closed form
+// through the existing H-functions, reciprocity, the phi convention, convergence in the
+// Legendre order and the number of Fourier modes.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "numerics/hfunction_nystrom.hpp"
+#include "numerics/ls_ambartsumian.hpp"
+#include "numerics/ls_assoc_legendre.hpp"
+#include "numerics/ls_dom_eigen.hpp"
+#include "numerics/ls_half_space.hpp"
+#include "numerics/ls_legendre.hpp"
+
+using namespace brdftab::numerics;
+
+namespace {
+const double kMu[] = {1e-12, 1e-6, 1e-3, 0.05, 0.3, 0.7, 1.0};
+double iso_reference(const NystromHSolver& h, double c, double mu, double mu0) {
+  return c * h(mu) * h(mu0) / (4 * M_PI * (mu + mu0));  // d'Eon Eq. 21
+}
+}  // namespace
+
+TEST_CASE("ls_brdf: isotropic phase function reproduces c H H / (4 pi (mu + mu0)) to 1e-12 (method A)") {
+  double worst = 0;
+  for (double c : {1e-6, 0.3, 0.9, 0.999, 1 - 1e-8, 1 - 1e-12, 1.0}) {
+    const LsDomMode a(c, {1.0}, 0, DomOptions{24, 7, 0.05});
+    const NystromHSolver h(HKind::isotropic, c);
+    for (double mu : kMu)
+      for (double mu0 : kMu) {
+        const double ref = iso_reference(h, c, mu, mu0);
+        const double err = std::abs(a.f_total(mu, mu0) / ref - 1);
+        worst = std::max(worst, err);
+        INFO("c = " << c << " mu = " << mu << " mu0 = " << mu0);
+        CHECK(err < 1e-11);
+      }
+  }
+  MESSAGE("method A, isotropic: max relative error against the H-function formula " << worst);
+}
+
+TEST_CASE("ls_brdf: isotropic phase function, method B (non-critical c) to 1e-12") {
+  double worst = 0;
+  for (double c : {0.3, 0.9, 0.999}) {
+    const LsAmbartsumianMode b(c, {1.0}, 0);
+    const NystromHSolver h(HKind::isotropic, c);
+    for (double mu : kMu)
+      for (double mu0 : kMu) {
+        const double err = std::abs(b.f_total(mu, mu0) / iso_reference(h, c, mu, mu0) - 1);
+        worst = std::max(worst, err);
+        CHECK(err < 1e-12);
+      }
+  }
+  MESSAGE("method B, isotropic: max relative error against the H-function formula " << worst);
+}
+
+TEST_CASE("ls_brdf: methods A and B agree on the LS multiple-scattering modes to 1e-10") {
+  const auto a = ls_legendre_closed_form(32);
+  double worst = 0;
+  for (double c : {0.5, 0.99})
+    for (int m : {0, 1, 3}) {
+      const LsDomMode A(c, a, m);
+      const LsAmbartsumianMode B(c, a, m);
+      double scale = 0, diff = 0;
+      for (double mu : {1e-6, 0.02, 0.3, 0.8, 1.0})
+        for (double mu0 : {1e-3, 0.1, 0.5, 0.9}) {
+          const double fa = A.f_multiple(mu, mu0), fb = B.f_multiple(mu, mu0);
+          scale = std::max(scale, std::abs(fb));
+          diff = std::max(diff, std::abs(fa - fb));
+        }
+      INFO("c = " << c << " m = " << m);
+      CHECK(diff <= 1e-10 * scale);
+      worst = std::max(worst, diff / scale);
+    }
+  MESSAGE("methods A vs B, LS modes 0, 1, 3: max |diff| / max|f_m,ms| = " << worst);
+}
+
+TEST_CASE("ls_brdf: the mode sum of the truncated single scattering equals c p_L(-w_i.w_o)/(mu_i+mu_o) (phi convention)") {
+  // Checks the azimuth plumbing (addition theorem, signs (-1)^k, phi = 0 back-scatter side)
+  // against the Legendre series evaluated directly at u = -(mu mu0 + s s0 cos phi).
+  const int L = 12;
+  const auto a = ls_legendre_closed_form(L);
+  const double c = 0.7;
+  for (double mu : {0.2, 0.9})
+    for (double mu0 : {0.4, 1.0})
+      for (double phi : {0.0, 1.0, M_PI}) {
+        double modes = 0;
+        for (int m = 0; m <= L; ++m) {
+          const LsDomMode md(c, a, m, DomOptions{8, 1, 0.1});
+          modes += (m ? 2 : 1) * (md.f_total(mu, mu0) - md.f_multiple(mu, mu0)) * std::cos(m * phi);
+        }
+        const double u = -(mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) * std::cos(phi));
+        double pk0 = 1, pk1 = u, ser = a[0] + a[1] * u;
+        for (int k = 2; k <= L; ++k) {
+          const double pk2 = ((2 * k - 1) * u * pk1 - (k - 1) * pk0) / k;
+          ser += a[k] * pk2;
+          pk0 = pk1;
+          pk1 = pk2;
+        }
+        const double direct = c * ser / (4 * M_PI) / (mu + mu0);
+        CHECK(std::abs(modes - direct) < 1e-14);
+      }
+}
+
+TEST_CASE("ls_brdf: half space -- reciprocity, positivity, phi = 0 is the back-scatter lobe, convergence in L and modes") {
+  const auto t0 = std::chrono::steady_clock::now();
+  LsHalfSpaceOptions o;
+  o.legendre_order = 24;
+  o.mode_tolerance = 1e-9;
+  const LsHalfSpace hs(0.9, o);
+  const auto t1 = std::chrono::steady_clock::now();
+  MESSAGE("c = 0.9, L = 24: " << hs.modes() << " Fourier modes to 1e-9; solve "
+                              << std::chrono::duration<double>(t1 - t0).count() << " s");
+  std::vector<LsHalfSpace::Direction> dirs;
+  for (double mu : kMu) dirs.push_back(hs.direction(mu));
+  double worst_recip = 0;
+  for (const auto& di : dirs)
+    for (const auto& dn : dirs)
+      for (double phi : {0.0, 0.5, 2.0, M_PI}) {
+        const double f1 = hs.f_multiple(di, dn, phi), f2 = hs.f_multiple(dn, di, phi);
+        worst_recip = std::max(worst_recip, std::abs(f1 - f2) / std::abs(f1));
+        CHECK(f1 > 0);
+        CHECK(std::isfinite(f1));
+      }
+  CHECK(worst_recip < 1e-12);
+  MESSAGE("reciprocity max relative |f(i,o) - f(o,i)| = " << worst_recip);
+  // single scattering peaks at phi = 0 (back-scatter, u = -1); the multiple part is larger
+  // at phi = pi (f_1,ms < 0: two back-scatterings make a forward turn), confirmed by the
+  // Monte Carlo test.
+  CHECK(ls_f_single(0.9, 0.3, 0.3, 0.0) > ls_f_single(0.9, 0.3, 0.3, M_PI));
+  CHECK(hs.f_multiple(dirs[4], dirs[4], 0.0) < hs.f_multiple(dirs[4], dirs[4], M_PI));
+  // timing of one f from cached directions
+  const auto t2 = std::chrono::steady_clock::now();
+  double sink = 0;
+  const int reps = 20000;
+  for (int r = 0; r < reps; ++r) sink += hs.f_multiple(dirs[r % 7], dirs[(r / 7) % 7], 0.001 * r);
+  const auto t3 = std::chrono::steady_clock::now();
+  const auto t4 = std::chrono::steady_clock::now();
+  for (int r = 0; r < 50; ++r) sink += hs.direction(0.01 + 0.019 * r).mu;
+  const auto t5 = std::chrono::steady_clock::now();
+  MESSAGE("per f (cached directions): " << 1e9 * std::chrono::duration<double>(t3 - t2).count() / reps
+                                        << " ns; per direction(mu): "
+                                        << 1e6 * std::chrono::duration<double>(t5 - t4).count() / 50
+                                        << " us (" << sink << ")");
+}
+
+TEST_CASE("ls_brdf: convergence in the Legendre order L (the multiple part is smooth)") {
+  const double c = 0.99;
+  const auto a24 = ls_legendre_closed_form(64), a48 = ls_legendre_closed_form(128);
+  double worst = 0;
+  for (int m : {0, 1, 2}) {
+    const LsDomMode x(c, a24, m), y(c, a48, m);
+    double scale = 0, diff = 0;
+    for (double mu : {1e-3, 0.3, 1.0})
+      for (double mu0 : {0.05, 0.5, 0.9}) {
+        scale = std::max(scale, std::abs(y.f_multiple(mu, mu0)));
+        diff = std::max(diff, std::abs(x.f_multiple(mu, mu0) - y.f_multiple(mu, mu0)));
+      }
+    worst = std::max(worst, diff / scale);
+  }
+  MESSAGE("f_ms: L = 64 vs L = 128, modes 0-2, max relative change " << worst);
+  CHECK(worst < 1e-10);
+}
+
+TEST_CASE("ls_brdf: bad input throws naming the parameter") {
+  CHECK_THROWS_AS(ls_f_single(1.5, 0.5, 0.5, 0.0), std::domain_error);
+  CHECK_THROWS_AS(ls_f_single(0.5, 0.0, 0.5, 0.0), std::domain_error);
+  CHECK_THROWS_AS(ls_f_single(0.5, 0.5, 0.5, std::nan("")), std::domain_error);
+  CHECK_THROWS_AS(LsDomMode(-0.1, {1.0}, 0), std::domain_error);
+  CHECK_THROWS_AS(LsAmbartsumianMode(std::nan(""), {1.0}, 0), std::domain_error);
+}
