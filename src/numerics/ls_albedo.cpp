@@ -10,6 +10,7 @@
 #include <boost/math/tools/roots.hpp>
 
 #include "numerics/domain_check.hpp"
+#include "numerics/ls_dom_eigen.hpp"
 #include "numerics/ls_legendre.hpp"
 
 namespace brdftab::numerics {
@@ -26,7 +27,7 @@ double azimuthal_phase(double mu, double mu0) {
     const double u = std::clamp(-(mu * mu0 + s * s0 * std::cos(phi)), -1.0, 1.0);
     return ls_phase_eq1(u);
   };
-  return 2.0 * GK::integrate(g, 0.0, kPi, 15, 1e-15);
+  return 2.0 * GK::integrate(g, 0.0, kPi, 8, 1e-13);
 }
 }  // namespace
 
@@ -35,31 +36,57 @@ double ls_single_albedo_exact(double c, double mu0) {
   require_closed("c", c, 0.0, 1.0, "[0, 1]");
   require_open_closed("mu", mu0, 0.0, 1.0, "(0, 1]");
   auto h = [&](double mu) { return mu / (mu + mu0) * azimuthal_phase(mu, mu0); };
-  double v = GK::integrate(h, 0.0, mu0, 15, 1e-15);
-  if (mu0 < 1) v += GK::integrate(h, mu0, 1.0, 15, 1e-15);
+  double v = GK::integrate(h, 0.0, mu0, 8, 1e-13);
+  if (mu0 < 1) v += GK::integrate(h, mu0, 1.0, 8, 1e-13);
   return c * v;
 }
 
+double ls_single_albedo(double c, double mu0) {
+  static const std::vector<double> a = ls_legendre_closed_form(kSingleAlbedoOrder);
+  return ls_single_albedo_legendre(c, mu0, a);
+}
+
 // m = 0 term of Eq. 2 + addition theorem: (c / 2) int_0^1 mu / (mu + mu0)
-//   sum_k (-1)^k A_k P_k(mu) P_k(mu0) dmu.
+//   sum_k (-1)^k A_k P_k(mu) P_k(mu0) dmu, on a fixed composite Gauss rule graded toward
+// mu = 0 (pole at -mu0) with enough points on the top panel for degree L.
 double ls_single_albedo_legendre(double c, double mu0, const std::vector<double>& a) {
   require_closed("c", c, 0.0, 1.0, "[0, 1]");
   require_open_closed("mu", mu0, 0.0, 1.0, "(0, 1]");
+  const int L = int(a.size()) - 1;
   std::vector<double> coef(a.size());
-  for (std::size_t k = 0; k < a.size(); ++k)
-    coef[k] = ((k % 2) ? -1.0 : 1.0) * a[k] * boost::math::legendre_p(int(k), mu0);
-  auto h = [&](double mu) {
-    double p0 = 1, p1 = mu, s = coef[0] + (a.size() > 1 ? coef[1] * mu : 0.0);
-    for (std::size_t k = 2; k < a.size(); ++k) {
-      const double p2 = ((2.0 * k - 1) * mu * p1 - (k - 1.0) * p0) / double(k);
+  {
+    double p0 = 1, p1 = mu0;
+    for (int k = 0; k <= L; ++k) {
+      double pk = (k == 0) ? 1.0 : (k == 1 ? mu0 : 0.0);
+      if (k >= 2) {
+        pk = ((2.0 * k - 1) * mu0 * p1 - (k - 1.0) * p0) / k;
+        p0 = p1;
+        p1 = pk;
+      }
+      coef[k] = ((k % 2) ? -1.0 : 1.0) * a[k] * pk;
+    }
+  }
+  std::vector<double> x, w;
+  double hi = 1.0;
+  std::vector<double> bounds{1.0};
+  for (int p = 1; p < 9; ++p) bounds.push_back(hi *= 0.05);
+  bounds.push_back(0.0);
+  for (int p = int(bounds.size()) - 1; p > 0; --p)
+    ls_gauss_legendre(p == 1 ? std::max(24, L / 2 + 16) : 24, bounds[p], bounds[p - 1], x, w);
+  // also split at mu0 if it is inside the top panel region (the integrand is smooth there;
+  // the pole at -mu0 is what the grading is for)
+  double v = 0;
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    const double mu = x[j];
+    double p0 = 1, p1 = mu, s = coef[0] + (L >= 1 ? coef[1] * mu : 0.0);
+    for (int k = 2; k <= L; ++k) {
+      const double p2 = ((2.0 * k - 1) * mu * p1 - (k - 1.0) * p0) / k;
       s += coef[k] * p2;
       p0 = p1;
       p1 = p2;
     }
-    return mu / (mu + mu0) * s;
-  };
-  double v = GK::integrate(h, 0.0, mu0, 15, 1e-15);
-  if (mu0 < 1) v += GK::integrate(h, mu0, 1.0, 15, 1e-15);
+    v += w[j] * mu / (mu + mu0) * s;
+  }
   return 0.5 * c * v;
 }
 
@@ -81,7 +108,7 @@ LsAlbedo::LsAlbedo(double c, int L, const DomOptions& o)
   double corr = 0;
   if (c > 0) {
     auto g = [&](double mu) {
-      return 2.0 * mu * (ls_single_albedo_exact(c, mu) - ls_single_albedo_legendre(c, mu, a_));
+      return 2.0 * mu * (ls_single_albedo(c, mu) - ls_single_albedo_legendre(c, mu, a_));
     };
     corr = Rule::integrate(g, 0.0, 0.1) + Rule::integrate(g, 0.1, 0.4) + Rule::integrate(g, 0.4, 1.0);
   }
@@ -92,7 +119,7 @@ double LsAlbedo::plane(double mu) const {
   std::vector<double> d;
   mode_.deviations(mu, d);
   const double a_trunc = -d[1] / mu;  // psi_1 = mu (1 - A): d_1 = psi_1 - mu = -mu A
-  return a_trunc - ls_single_albedo_legendre(c_, mu, a_) + ls_single_albedo_exact(c_, mu);
+  return a_trunc - ls_single_albedo_legendre(c_, mu, a_) + ls_single_albedo(c_, mu);
 }
 
 double LsAlbedo::plane_by_integration(double mu0) const {
@@ -100,7 +127,7 @@ double LsAlbedo::plane_by_integration(double mu0) const {
   const auto& w = mode_.weights();
   double s = 0;
   for (std::size_t j = 0; j < x.size(); ++j) s += w[j] * 2 * kPi * x[j] * mode_.f_multiple(x[j], mu0);
-  return s + ls_single_albedo_exact(c_, mu0);
+  return s + ls_single_albedo(c_, mu0);
 }
 
 double ls_kd(double c) {

@@ -15,8 +15,13 @@
 
 namespace brdftab::numerics {
 
-// Single-scattering plane albedo with the exact phase function (Eq. 1, 17).
+// Single-scattering plane albedo with the exact phase function (Eq. 1, 17) by nested
+// adaptive Gauss-Kronrod (slow, ~1e-12; the reference for the tests).
 double ls_single_albedo_exact(double c, double mu);
+// The same from the Legendre series to order kSingleAlbedoOrder (A_k ~ k^-4 and the
+// mu-integral add ~k^-2.5: the series converges to ~1e-13 there; fast; used by LsAlbedo).
+inline constexpr int kSingleAlbedoOrder = 512;
+double ls_single_albedo(double c, double mu);
 // Same with the phase function Legendre-truncated (coefficients A_0..A_L, Eq. 2).
 double ls_single_albedo_legendre(double c, double mu, const std::vector<double>& coefficients);
 
