@@ -23,7 +23,11 @@
 // d_k = psi_k - Lambda_k (the unknowns; no cancellation for small c).
 // For m = 0: psi_1(mu) = mu (1 - A(mu)) with A the plane albedo (flux conservation).
 // Critical case c = 1, m = 0 (the two solutions of the equation merge; plain iteration
-// stalls): psi_1 = 0 exactly (no absorption) is imposed, which removes the double root.
+// stalls): psi_1 = 0 exactly (no absorption) is imposed and the iteration converges, but the
+// remaining system is still nearly degenerate: measured agreement with method A is only
+// ~1e-8 there. Near c = 1 (1 - c < ~1e-4) Anderson acceleration can land on the
+// unphysical root (measured: isotropic, 1 - c = 1e-8, error 7e-4). Method B is therefore
+// the independent check for c <= 0.999; method A (ls_dom_eigen) handles 1 - c -> 0.
 #include <vector>
 
 namespace brdftab::numerics {
