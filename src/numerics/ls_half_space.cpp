@@ -49,6 +49,12 @@ LsHalfSpace::LsHalfSpace(double c, const LsHalfSpaceOptions& o) : c_(c) {
     }
   }
   offset_.push_back(offset_.back() + std::size_t(L - int(modes_.size()) + 2));
+  for (std::size_t m = 0; m < modes_.size(); ++m) {
+    nz_offset_.push_back(nz_.size());
+    for (std::size_t o = offset_[m]; o < offset_[m + 1]; ++o)
+      if (b_[o] != 0.0) nz_.push_back(o);
+  }
+  nz_offset_.push_back(nz_.size());
 }
 
 void LsHalfSpace::direction(double mu, Direction& out) const {
@@ -72,8 +78,10 @@ LsHalfSpace::Direction LsHalfSpace::direction(double mu) const {
 
 double LsHalfSpace::f_multiple_mode(int m, const Direction& a, const Direction& b) const {
   double s = 0;
-  for (std::size_t o = offset_[m]; o < offset_[m + 1]; ++o)
+  for (std::size_t q = nz_offset_[m]; q < nz_offset_[m + 1]; ++q) {
+    const std::size_t o = nz_[q];
     s += b_[o] * (a.dev[o] * b.lam[o] + a.lam[o] * b.dev[o] + a.dev[o] * b.dev[o]);
+  }
   return s / (a.mu + b.mu);
 }
 
