@@ -182,3 +182,22 @@ TEST_CASE("ls_brdf: bad input throws naming the parameter") {
   CHECK_THROWS_AS(LsDomMode(-0.1, {1.0}, 0), std::domain_error);
   CHECK_THROWS_AS(LsAmbartsumianMode(std::nan(""), {1.0}, 0), std::domain_error);
 }
+
+TEST_CASE("ls_brdf: cos(phi) coefficient of the three-term single scattering (d'Eon Eq. 33-34)") {
+  // Eq. 33 defines f_1^(1) = (1/pi) int_{-pi}^{pi} c p(-mu)/(mu_i + mu_o) cos(phi) dphi, the
+  // full cos(phi) coefficient (= 2 f_1 in the (2 - delta_m0) convention used here). With the
+  // three-term p of Eq. 5 this is c S (45 mu_i mu_o + 64) / (192 pi (mu_i + mu_o)),
+  // S = sqrt((1 - mu_i^2)(1 - mu_o^2)); Eq. 34 prints 384 pi, i.e. half of Eq. 33's value
+  // (and Eq. 11, the same integral without the sign flip, prints 192 pi).
+  const std::vector<double> three{1.0, -4.0 / 3.0, 5.0 / 16.0};
+  const double c = 0.8;
+  const LsDomMode md(c, three, 1, DomOptions{8, 1, 0.1});
+  for (double mi : {0.2, 0.7})
+    for (double mo : {0.4, 0.9}) {
+      const double f1ss = md.f_total(mi, mo) - md.f_multiple(mi, mo);
+      const double S = std::sqrt((1 - mi * mi) * (1 - mo * mo));
+      const double eq33 = c * S * (45 * mi * mo + 64) / (192 * M_PI * (mi + mo));
+      CHECK(std::abs(2 * f1ss - eq33) < 1e-15);
+      CHECK(std::abs(f1ss - eq33 / 2) < 1e-15);  // Eq. 34 as printed (384 pi) equals f_1, not 2 f_1
+    }
+}
