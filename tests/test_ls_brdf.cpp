@@ -201,3 +201,34 @@ TEST_CASE("ls_brdf: cos(phi) coefficient of the three-term single scattering (d'
       CHECK(std::abs(f1ss - eq33 / 2) < 1e-15);  // Eq. 34 as printed (384 pi) equals f_1, not 2 f_1
     }
 }
+
+TEST_CASE("ls_brdf: reciprocity and the invariance identity from the raw source-function integration") {
+  // f_source(mu_j, mu_l) (incidence at node l, emergence at mu_j by integrating the
+  // eigen-solution's source function) is not symmetric by construction; reciprocity
+  // f(j, l) = f(l, j) and the invariance form sum_k b_k psi_k psi_k / (mu + mu0) are checked
+  // against it on nodes >= 1e-3. The raw matrix V+ V-^-1 is only reported (see header).
+  const auto a = ls_legendre_closed_form(24);
+  double worst_recip = 0, worst_inv = 0, worst_raw = 0;
+  for (double c : {0.5, 1 - 1e-12, 1.0})
+    for (int m : {0, 1, 2}) {
+      const LsDomMode md(c, a, m);
+      const auto& x = md.nodes();
+      const Eigen::MatrixXd raw = md.node_brdf();
+      std::vector<int> idx;
+      for (int j = 0; j < int(x.size()); ++j)
+        if (x[j] >= 1e-3) idx.push_back(j);
+      for (std::size_t p = 0; p < idx.size(); p += 7)
+        for (std::size_t q = 0; q < idx.size(); q += 5) {
+          const int j = idx[p], l = idx[q];
+          const double fjl = md.f_source(x[j], l), flj = md.f_source(x[l], j);
+          const double fpsi = md.f_total(x[j], x[l]);
+          worst_recip = std::max(worst_recip, std::abs(fjl - flj) / std::abs(fpsi));
+          worst_inv = std::max(worst_inv, std::abs(fjl - fpsi) / std::abs(fpsi));
+          worst_raw = std::max(worst_raw, std::abs(raw(j, l) - raw(l, j)) / std::abs(fpsi));
+        }
+    }
+  MESSAGE("source-function route on nodes >= 1e-3: reciprocity " << worst_recip << ", vs invariance form "
+          << worst_inv << "; raw V+ V-^-1 asymmetry " << worst_raw);
+  CHECK(worst_recip < 2e-10);  // measured 9.3e-11
+  CHECK(worst_inv < 2e-10);    // measured 9.2e-11
+}

@@ -146,6 +146,7 @@ LsDomMode::LsDomMode(double c, const std::vector<double>& coefficients, int m, c
   }
   Eigen::MatrixXd vp = V.topRows(N), vm = V.bottomRows(N);
   vminus_inv_ = vm.inverse();
+  r_nodes_ = vp * vminus_inv_;  // R = V+ V-^-1 (diffuse reflection matrix at the nodes)
   // bmat_(k, a) = sum_l w_l Lambda_k(mu_l) [v+_la + (-1)^(k+m) v-_la]
   bmat_.resize(K, N);
   for (int i = 0; i < K; ++i) {
@@ -213,8 +214,28 @@ double LsDomMode::f_multiple(double mu, double mu0) const {
 
 Eigen::MatrixXd LsDomMode::node_brdf() const {
   const int N = int(mu_.size());
-  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(N, N);
-  return R;
+  Eigen::MatrixXd f(N, N);
+  const double sm = (m_ % 2) ? -1.0 : 1.0;
+  for (int j = 0; j < N; ++j)
+    for (int l = 0; l < N; ++l) f(j, l) = sm * r_nodes_(j, l) / (2 * kPi * mu_[l] * w_[l]);
+  return f;
 }
 
+}  // namespace brdftab::numerics
+
+namespace brdftab::numerics {
+double LsDomMode::f_source(double mu, int l) const {
+  require_open_closed("mu", mu, 0.0, 1.0, "(0, 1]");
+  const int N = int(mu_.size()), K = lmax_ - m_ + 1;
+  std::vector<double> lm(K);
+  ls_assoc_legendre(m_, lmax_, mu, lm.data());
+  Eigen::RowVectorXd e = Eigen::RowVectorXd::Zero(N);
+  for (int i = 0; i < K; ++i) {
+    const double coef = 0.5 * c_ * a_[m_ + i] * lm[i];
+    if (coef != 0.0) e += coef * bmat_.row(i);
+  }
+  for (int a = 0; a < N; ++a) e(a) /= (1.0 + k_(a) * mu);
+  const double rw = e.dot(vminus_inv_.col(l));
+  return ((m_ % 2) ? -1.0 : 1.0) * rw / (2 * kPi * mu_[l] * w_[l]);
+}
 }  // namespace brdftab::numerics

@@ -47,8 +47,13 @@ class LsDomMode {
   void deviations(double mu, std::vector<double>& d) const;
   double f_total(double mu, double mu0) const;
   double f_multiple(double mu, double mu0) const;
-  // f_m at the nodes (N x N) including the truncated single scattering.
+  // f_m(mu_j, mu_l) at the nodes (N x N) from R = V+ V-^-1, including the truncated single
+  // scattering. Diagnostic only: the upward eigenvector components of the stiff modes carry
+  // round-off (measured asymmetry 3e-5 on nodes >= 1e-3); outputs use f_source / psi.
   Eigen::MatrixXd node_brdf() const;
+  // f_m(mu, mu_l) for incidence at node l straight from the source-function integration
+  // (no invariance form, not symmetric by construction).
+  double f_source(double mu, int l) const;
   const std::vector<double>& nodes() const { return mu_; }
   const std::vector<double>& weights() const { return w_; }
 
@@ -61,6 +66,7 @@ class LsDomMode {
   Eigen::VectorXd k_;            // decay constants of the N bounded solutions
   Eigen::MatrixXd bmat_;         // (K x N): sum_l w_l [Lambda_k(mu_l) v+_la + Lambda_k(-mu_l) v-_la]
   Eigen::MatrixXd vminus_inv_;   // V-^-1
+  Eigen::MatrixXd r_nodes_;      // V+ V-^-1
 };
 
 }  // namespace brdftab::numerics
