@@ -16,7 +16,7 @@ using namespace brdftab::numerics;
 TEST_CASE("ls_timing: default half space" * doctest::skip()) {
   for (double c : {0.5, 1.0}) {
     LsHalfSpaceOptions o;
-    o.mode_tolerance = 1e-13;
+    o.mode_tolerance = (c == 0.5) ? 1e-11 : 1e-13;  // default tolerance, then the full mode table
     const auto t0 = std::chrono::steady_clock::now();
     const LsHalfSpace hs(c, o);
     const auto t1 = std::chrono::steady_clock::now();
