@@ -106,19 +106,19 @@ AttributeRead read_attribute(hid_t obj, const char* name, std::size_t max_string
 bool is_hard_link(hid_t loc, const char* name, std::string* kind) {
   const htri_t exists = H5Lexists(loc, name, H5P_DEFAULT);
   if (exists <= 0) {
-    if (kind) *kind = exists < 0 ? "unreadable link" : "missing";
+    if (kind) *kind = exists < 0 ? "an unreadable link" : "missing";
     return false;
   }
   H5L_info_t info;
   if (H5Lget_info(loc, name, &info, H5P_DEFAULT) < 0) {
-    if (kind) *kind = "unreadable link";
+    if (kind) *kind = "an unreadable link";
     return false;
   }
   if (info.type == H5L_TYPE_HARD) return true;
   if (kind)
-    *kind = info.type == H5L_TYPE_SOFT       ? "soft link"
-            : info.type == H5L_TYPE_EXTERNAL ? "external link"
-                                             : "user-defined link";
+    *kind = info.type == H5L_TYPE_SOFT       ? "a soft link"
+            : info.type == H5L_TYPE_EXTERNAL ? "an external link"
+                                             : "a user-defined link";
   return false;
 }
 

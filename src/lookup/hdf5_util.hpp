@@ -78,7 +78,8 @@ struct AttributeRead {
 AttributeRead read_attribute(hid_t obj, const char* name, std::size_t max_string);
 
 // True if `name` (one path component) exists in group `loc` as a hard link. Soft, external
-// and user-defined links give false with `kind` saying which.
+// and user-defined links give false with `kind` saying which ("a soft link", "an external
+// link", ..., or "missing").
 bool is_hard_link(hid_t loc, const char* name, std::string* kind = nullptr);
 
 }  // namespace brdftab::lookup::hdf5

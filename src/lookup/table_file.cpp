@@ -382,8 +382,10 @@ Axis read_axis(const OpenFile& f, const std::string& dataset, hid_t axes_group, 
     fail(file, dataset, where + ": /axes/" + dataset + "/" + name + " is not a hard-linked dataset (" + kind + ")");
   {
     Hid expected(H5Oopen(axes_group, name.c_str(), H5P_DEFAULT), H5Oclose);
+    H5O_info_t sinfo;
     if (!expected.valid() || object_address(expected) == HADDR_UNDEF ||
-        object_address(expected) != object_address(scale))
+        object_address(expected) != object_address(scale) || H5Oget_info2(scale, &sinfo, H5O_INFO_BASIC) < 0 ||
+        sinfo.rc != 1)
       fail(file, dataset, where + ": the attached scale is not /axes/" + dataset + "/" + name +
                               " (a table stored under another table's name?)");
   }
@@ -457,7 +459,7 @@ std::vector<std::string> list_tables_in(const OpenFile& f) {
     check_name(file, name == "axes" ? std::string("x") : name);
     std::string kind;
     if (!hdf5::is_hard_link(f.id(), name.c_str(), &kind))
-      fail(file, name, "is a " + kind + "; a table must be a hard-linked dataset");
+      fail(file, name, "is " + kind + "; a table must be a hard-linked dataset");
     H5O_info_t oinfo;
     if (H5Oget_info_by_name2(f.id(), name.c_str(), &oinfo, H5O_INFO_BASIC, H5P_DEFAULT) < 0)
       fail(file, name, "cannot read its object header (corrupt file)");
@@ -477,12 +479,15 @@ LoadedTable load_table_in(const OpenFile& f, const std::string& dataset) {
   std::string kind;
   if (!hdf5::is_hard_link(f.id(), dataset.c_str(), &kind)) {
     if (kind == "missing") fail(file, dataset, "no such dataset");
-    fail(file, dataset, "is a " + kind + "; a table must be a hard-linked dataset");
+    fail(file, dataset, "is " + kind + "; a table must be a hard-linked dataset");
   }
   H5O_info_t oinfo;
   if (H5Oget_info_by_name2(f.id(), dataset.c_str(), &oinfo, H5O_INFO_BASIC, H5P_DEFAULT) < 0)
     fail(file, dataset, "cannot read its object header (corrupt file)");
   if (oinfo.type != H5O_TYPE_DATASET) fail(file, dataset, "is not a dataset");
+  // One name per object: a table hard-linked under a second name (one table posing as
+  // another) is refused, as is an aliased axis group or axis.
+  if (oinfo.rc != 1) fail(file, dataset, "has " + std::to_string(oinfo.rc) + " hard links (a table has exactly one)");
   Hid d(H5Dopen2(f.id(), dataset.c_str(), H5P_DEFAULT), H5Dclose);
   if (!d.valid()) fail(file, dataset, "cannot open it as a dataset");
 
@@ -539,6 +544,11 @@ LoadedTable load_table_in(const OpenFile& f, const std::string& dataset) {
     fail(file, dataset, "/axes/" + dataset + " is not a hard-linked group (" + kind + ")");
   Hid axes_group(H5Gopen2(axes_root, dataset.c_str(), H5P_DEFAULT), H5Gclose);
   if (!axes_group.valid()) fail(file, dataset, "cannot open /axes/" + dataset);
+  {
+    H5O_info_t ginfo;
+    if (H5Oget_info2(axes_group, &ginfo, H5O_INFO_BASIC) < 0 || ginfo.rc != 1)
+      fail(file, dataset, "/axes/" + dataset + " has more than one hard link (axes shared with another table)");
+  }
 
   const std::vector<Hid> scales = resolve_axes(f, dataset, d, rank);
   std::vector<Axis> axes;

@@ -47,7 +47,7 @@ inline constexpr long long kSchemaVersion = 1;
 // dataset declaring more values is refused before anything is allocated.
 inline constexpr std::size_t kMaxTableFileBytes = std::size_t(256) << 20;  // 256 MiB
 inline constexpr std::size_t kMaxTableValues = std::size_t(1) << 24;       // 16,777,216 values
-inline constexpr std::size_t kMaxAttributeStringBytes = 65536;
+inline constexpr std::size_t kMaxAttributeStringBytes = 16384;
 
 class TableFileError : public std::runtime_error {
  public:
