@@ -195,6 +195,10 @@ void write_new_file(const std::filesystem::path& p, const std::vector<unsigned c
 
 std::vector<unsigned char> table_file_image(const std::vector<DatasetToWrite>& datasets,
                                             const std::map<std::string, AttributeValue>& file_attributes) {
+  for (std::size_t i = 0; i < datasets.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (datasets[i].table.name() == datasets[j].table.name())
+        throw WriteError("dataset name '" + datasets[i].table.name() + "' appears twice");
   std::vector<unsigned char> image = build_hdf5_image(datasets, file_attributes);
   const std::string block = lookup::make_digest_block(
       std::span<const unsigned char>(image.data() + lookup::kDigestBlockBytes, image.size() - lookup::kDigestBlockBytes));
