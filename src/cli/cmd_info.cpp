@@ -28,8 +28,8 @@ std::string show_or_missing(const lookup::TableInfo& info, const std::string& ke
   return it == info.attributes.end() ? std::string("(missing)") : show(it->second);
 }
 
-void print_table(const std::filesystem::path& file, const std::string& name, std::ostream& out) {
-  const auto loaded = lookup::load_table(file, name);
+void print_table(const lookup::VerifiedFile& file, const std::string& name, std::ostream& out) {
+  const auto loaded = file.load_table(name);
   const auto& t = loaded.table;
   const auto& info = loaded.info;
   out << "\ndataset: " << escape_control(name) << "\n";
@@ -62,10 +62,11 @@ int run_info(const std::filesystem::path& file, std::ostream& out, std::ostream&
   int status = 0;
   try {
     out << "file: " << escape_control(file.string()) << "\n";
-    for (const auto& [k, v] : lookup::file_attributes(file)) out << "  " << k << ": " << show(v) << "\n";
-    for (const auto& name : lookup::list_tables(file)) {
+    const auto verified = lookup::VerifiedFile::open(file);
+    for (const auto& [k, v] : verified.attributes()) out << "  " << k << ": " << show(v) << "\n";
+    for (const auto& name : verified.list_tables()) {
       try {
-        print_table(file, name, out);
+        print_table(verified, name, out);
       } catch (const std::exception& e) {
         err << "brdftab info: " << escape_control(e.what()) << "\n";
         status = 1;
@@ -85,9 +86,10 @@ int run_info_markdown(const std::vector<std::filesystem::path>& files, std::ostr
   int status = 0;
   for (const auto& file : files) {
     try {
-      for (const auto& name : lookup::list_tables(file)) {
+      const auto verified = lookup::VerifiedFile::open(file);
+      for (const auto& name : verified.list_tables()) {
         try {
-          const auto loaded = lookup::load_table(file, name);
+          const auto loaded = verified.load_table(name);
           const auto& t = loaded.table;
           std::string shape;
           for (int d = 0; d < t.rank(); ++d) shape += (d ? " x " : "") + std::to_string(t.axis(d).n);

@@ -566,17 +566,23 @@ LoadedTable load_table_in(const OpenFile& f, const std::string& dataset) {
   return out;
 }
 
-// Runs `work(open_file)` on the verified bytes of `file`, under the HDF5 lock.
+// Runs `work(open_file)` on verified bytes, under the HDF5 lock.
 template <class Work>
-auto with_file(const std::filesystem::path& file, const OpenOptions& options, const std::string& dataset, Work work) {
+auto with_bytes(const std::filesystem::path& file, std::span<const unsigned char> bytes, const std::string& dataset,
+                Work work) {
   try {
-    const std::vector<unsigned char> bytes = trusted_bytes(file, options);
     std::lock_guard lock(hdf5::mutex());
     OpenFile f(file, bytes);
     return work(f);
   } catch (const std::bad_alloc&) {
     fail(file, dataset, "not enough memory to load it");
   }
+}
+
+std::map<std::string, Attribute> file_attributes_in(const OpenFile& f) {
+  Hid root(H5Oopen(f.id(), "/", H5P_DEFAULT), H5Oclose);
+  if (!root.valid()) fail(f.path(), "", "cannot open the root group (corrupt file)");
+  return read_schema_attributes(f.path(), "", "file ", root, kFileRules);
 }
 
 }  // namespace
@@ -595,33 +601,49 @@ DigestStatus check_file_digest(const std::filesystem::path& file) {
   return verify_digest(read_whole_file(file));
 }
 
+VerifiedFile VerifiedFile::open(const std::filesystem::path& file, const OpenOptions& options) {
+  VerifiedFile v;
+  v.path_ = file;
+  try {
+    v.bytes_ = std::make_shared<const std::vector<unsigned char>>(trusted_bytes(file, options));
+  } catch (const std::bad_alloc&) {
+    fail(file, "", "not enough memory to read it");
+  }
+  return v;
+}
+
+std::size_t VerifiedFile::size() const { return bytes_ ? bytes_->size() : 0; }
+
+std::vector<std::string> VerifiedFile::list_tables() const {
+  return with_bytes(path_, *bytes_, "", [](const OpenFile& f) { return list_tables_in(f); });
+}
+
+LoadedTable VerifiedFile::load_table(const std::string& dataset) const {
+  return with_bytes(path_, *bytes_, dataset, [&](const OpenFile& f) { return load_table_in(f, dataset); });
+}
+
+std::map<std::string, Attribute> VerifiedFile::attributes() const {
+  return with_bytes(path_, *bytes_, "", [](const OpenFile& f) { return file_attributes_in(f); });
+}
+
 std::vector<std::string> list_tables(const std::filesystem::path& file, const OpenOptions& options) {
-  return with_file(file, options, "", [](const OpenFile& f) { return list_tables_in(f); });
+  return VerifiedFile::open(file, options).list_tables();
 }
 
 std::map<std::string, Attribute> file_attributes(const std::filesystem::path& file, const OpenOptions& options) {
-  return with_file(file, options, "", [](const OpenFile& f) {
-    Hid root(H5Oopen(f.id(), "/", H5P_DEFAULT), H5Oclose);
-    if (!root.valid()) fail(f.path(), "", "cannot open the root group (corrupt file)");
-    return read_schema_attributes(f.path(), "", "file ", root, kFileRules);
-  });
+  return VerifiedFile::open(file, options).attributes();
 }
 
 LoadedTable load_table(const std::filesystem::path& file, const std::string& dataset, const OpenOptions& options) {
-  return with_file(file, options, dataset, [&](const OpenFile& f) { return load_table_in(f, dataset); });
+  return VerifiedFile::open(file, options).load_table(dataset);
 }
 
 void validate_table_image(const std::filesystem::path& file, std::span<const unsigned char> bytes) {
-  try {
-    std::lock_guard lock(hdf5::mutex());
-    OpenFile f(file, bytes);
-    Hid root(H5Oopen(f.id(), "/", H5P_DEFAULT), H5Oclose);
-    if (!root.valid()) fail(file, "", "cannot open the root group (corrupt file)");
-    read_schema_attributes(file, "", "file ", root, kFileRules);
+  with_bytes(file, bytes, "", [&](const OpenFile& f) {
+    file_attributes_in(f);
     for (const auto& name : list_tables_in(f)) load_table_in(f, name);
-  } catch (const std::bad_alloc&) {
-    fail(file, "", "not enough memory to load it");
-  }
+    return 0;
+  });
 }
 
 }  // namespace brdftab::lookup

@@ -31,6 +31,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -92,6 +93,23 @@ std::vector<std::string> list_tables(const std::filesystem::path& file, const Op
 LoadedTable load_table(const std::filesystem::path& file, const std::string& dataset, const OpenOptions& options = {});
 // File-level attributes the schema names (schema_version, generator, created_utc).
 std::map<std::string, Attribute> file_attributes(const std::filesystem::path& file, const OpenOptions& options = {});
+
+// A table file read and verified once (digest, foreign-file policy), held in memory:
+// any number of tables are then loaded from those bytes without reading or hashing the
+// file again. Copies share the bytes. Thread-safe (loads take the HDF5 lock).
+class VerifiedFile {
+ public:
+  static VerifiedFile open(const std::filesystem::path& file, const OpenOptions& options = {});
+  const std::filesystem::path& path() const { return path_; }
+  std::size_t size() const;
+  std::vector<std::string> list_tables() const;
+  LoadedTable load_table(const std::string& dataset) const;
+  std::map<std::string, Attribute> attributes() const;
+
+ private:
+  std::filesystem::path path_;
+  std::shared_ptr<const std::vector<unsigned char>> bytes_;
+};
 
 // Parses every table of an in-memory file image (used by isolated validators: a child
 // process calls this on the parent's bytes). Throws TableFileError.

@@ -13,7 +13,9 @@ const LoadedTable& TableSet::get(const std::string& file, const std::string& dat
   std::lock_guard lock(mutex_);
   auto it = loaded_.find(key);
   if (it != loaded_.end()) return *it->second;
-  auto loaded = std::make_unique<LoadedTable>(load_table(dir_ / file, dataset, options_));
+  auto f = files_.find(file);
+  if (f == files_.end()) f = files_.emplace(file, VerifiedFile::open(dir_ / file, options_)).first;
+  auto loaded = std::make_unique<LoadedTable>(f->second.load_table(dataset));
   return *loaded_.emplace(key, std::move(loaded)).first->second;
 }
 

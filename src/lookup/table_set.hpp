@@ -3,7 +3,8 @@
 // for the tables it touches. get() is thread-safe; the returned reference stays valid for
 // the lifetime of the set, and queries on it need no locking. Files are verified as
 // load_table does (digest first; foreign files only with options.allow_foreign or
-// BRDFTAB_ALLOW_FOREIGN=1).
+// BRDFTAB_ALLOW_FOREIGN=1). Each file is read and its digest checked once; its bytes
+// stay in memory for the lifetime of the set (tables are kilobytes to megabytes).
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -31,6 +32,7 @@ class TableSet {
   OpenOptions options_;
   mutable std::mutex mutex_;
   std::map<std::string, std::unique_ptr<LoadedTable>> loaded_;
+  std::map<std::string, VerifiedFile> files_;  // each file read and verified once
 };
 
 }  // namespace brdftab::lookup
