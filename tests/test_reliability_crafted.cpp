@@ -405,3 +405,16 @@ TEST_CASE("crafted: info exits non-zero on a dangling link or a group, says wron
   CHECK(r.status == 1);  // the second file is missing
   CHECK(has(r.err, "file not found"));
 }
+
+TEST_CASE("crafted: a valid table with its axes swapped, or holding another quantity, fails require_schema") {
+  const auto dir = fresh_dir("schema");
+  const auto p = craft(dir / "t.h5");
+  const auto t = lookup::load_table(p, "T");
+  CHECK_NOTHROW(lookup::require_schema(t, {"x", "y"}, "crafted"));
+  CHECK_THROWS_WITH_AS(lookup::require_schema(t, {"y", "x"}),
+                       doctest::Contains("dataset 'T': axes are (x, y), this table must have axes (y, x)"),
+                       lookup::TableFileError);
+  CHECK_THROWS_WITH_AS(lookup::require_schema(t, {"x", "y"}, "H_iso("),
+                       doctest::Contains("quantity is \"crafted\", expected one starting with \"H_iso(\""),
+                       lookup::TableFileError);
+}

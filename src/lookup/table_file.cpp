@@ -587,6 +587,21 @@ std::map<std::string, Attribute> file_attributes_in(const OpenFile& f) {
 
 }  // namespace
 
+void require_schema(const LoadedTable& t, std::initializer_list<std::string_view> axis_names,
+                    std::string_view quantity_prefix) {
+  std::string expected, found;
+  for (auto n : axis_names) expected += (expected.empty() ? "" : ", ") + std::string(n);
+  for (int d = 0; d < t.table.rank(); ++d) found += (d ? ", " : "") + t.table.axis(d).name;
+  if (expected != found)
+    fail(t.info.file, t.info.dataset, "axes are (" + found + "), this table must have axes (" + expected + ")");
+  if (!quantity_prefix.empty()) {
+    const std::string q = t.info.attribute_string("quantity");
+    if (q.compare(0, quantity_prefix.size(), quantity_prefix) != 0)
+      fail(t.info.file, t.info.dataset, "quantity is \"" + q.substr(0, 80) + "\", expected one starting with \"" +
+                                            std::string(quantity_prefix) + "\"");
+  }
+}
+
 void set_foreign_file_check(ForeignFileCheck check) {
   std::lock_guard lock(hook_mutex());
   hook() = std::move(check);

@@ -30,6 +30,8 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <initializer_list>
+#include <string_view>
 #include <map>
 #include <memory>
 #include <span>
@@ -71,6 +73,13 @@ struct LoadedTable {
   Table table;
   TableInfo info;
 };
+
+// For runtime helpers that expect a particular table: throws TableFileError naming the
+// file, the dataset and the mismatch unless the table's axes are exactly `axis_names`, in
+// this order, and (if given) its `quantity` attribute starts with `quantity_prefix`. A
+// table stored with its axes swapped, or another table stored under this name, is refused.
+void require_schema(const LoadedTable& t, std::initializer_list<std::string_view> axis_names,
+                    std::string_view quantity_prefix = {});
 
 // Called, when foreign files are allowed, with a foreign file's bytes before libhdf5
 // parses them (in this process). Throw to refuse the file. Process-wide.
