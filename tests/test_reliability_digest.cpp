@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <thread>
 
 #include "cli/foreign_isolation.hpp"
 #include "lookup/detail/sha256.hpp"
@@ -173,4 +174,36 @@ TEST_CASE("FIFOs, folders and over-cap files are refused without blocking or rea
   CHECK(has(load_error(dir / "huge.h5"), "more than the 268435456 a table file may have"));
   CHECK(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(2));
   CHECK(has(load_error(dir / "missing.h5"), "file not found"));
+}
+
+TEST_CASE("8 threads load through one TableSet and through VerifiedFile at once (run under TSan by sanitize.sh)") {
+  const auto dir = fresh_dir("threads");
+  auto a = small_table(), b = small_table();
+  b.table = lookup::Table("U", {b.table.axis(0), b.table.axis(1)}, std::vector<double>(15, 2.0),
+                          lookup::Storage::float32, lookup::Interpolation::linear);
+  tablewrite::write_table_file(dir / "t.h5", {a, b});
+  lookup::TableSet set(dir);
+  const auto file = lookup::VerifiedFile::open(dir / "t.h5");
+  std::vector<const lookup::Table*> seen(8);
+  std::vector<std::string> errors(8);
+  std::vector<std::thread> threads;
+  for (int i = 0; i < 8; ++i)
+    threads.emplace_back([&, i] {
+      try {
+        for (int r = 0; r < 5; ++r) {
+          seen[i] = &set.table("t.h5", i % 2 ? "T" : "U");
+          const auto t = file.load_table(i % 2 ? "U" : "T");
+          if (t.table.axis(0).n != 5) errors[i] = "wrong shape";
+        }
+      } catch (const std::exception& e) {
+        errors[i] = e.what();
+      }
+    });
+  for (auto& t : threads) t.join();
+  for (int i = 0; i < 8; ++i) {
+    CHECK(errors[i].empty());
+    CHECK(seen[i] == seen[i % 2]);
+  }
+  CHECK(seen[0] != seen[1]);
+  CHECK(set.loaded_count() == 2);
 }
