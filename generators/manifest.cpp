@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <set>
+#include <sstream>
 
 #include "generators/family.hpp"
 #include "numerics/domain_check.hpp"
@@ -13,7 +15,101 @@ using numerics::format_number;
 
 namespace {
 std::string type_name(const nlohmann::json& j) { return j.type_name(); }
+
+// Rejects a list holding the same string twice, or two objects with the same "name".
+void check_no_duplicate_entries(const nlohmann::json& j, const std::string& path, int depth = 0) {
+  if (depth > kMaxManifestDepth) throw ManifestError(path + ": nested deeper than " + std::to_string(kMaxManifestDepth));
+  if (j.is_object()) {
+    for (auto it = j.begin(); it != j.end(); ++it)
+      check_no_duplicate_entries(it.value(), path + "." + bounded_text(it.key(), 40), depth + 1);
+  } else if (j.is_array()) {
+    std::set<std::string> seen;
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      const auto& e = j[i];
+      const nlohmann::json* id = nullptr;
+      if (e.is_string()) id = &e;
+      else if (e.is_object() && e.contains("name") && e["name"].is_string()) id = &e["name"];
+      if (id && !seen.insert(id->get<std::string>()).second)
+        throw ManifestError(path + "[" + std::to_string(i) + "]: duplicate entry \"" + bounded_text(id->get<std::string>()) +
+                            "\" (each entry may appear once)");
+      check_no_duplicate_entries(e, path + "[" + std::to_string(i) + "]", depth + 1);
+    }
+  }
+}
 }  // namespace
+
+std::string bounded_text(const std::string& s, std::size_t max) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size() && out.size() < max; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 0x20 || c == 0x7f || c == '\\') {
+      static const char* hex = "0123456789abcdef";
+      out += c == '\\' ? std::string("\\\\") : std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (out.size() >= max && s.size() > max) out += "...";
+  return out;
+}
+
+std::string describe_json(const nlohmann::json& j) {
+  if (j.is_array()) return "an array of " + std::to_string(j.size()) + " elements";
+  if (j.is_object()) return "an object of " + std::to_string(j.size()) + " keys";
+  if (j.is_string()) return "\"" + bounded_text(j.get<std::string>(), 40) + "\"";
+  return bounded_text(j.dump(), 40);
+}
+
+nlohmann::json parse_manifest_text(const std::string& text) {
+  if (text.size() > kMaxManifestBytes)
+    throw ManifestError("is " + std::to_string(text.size()) + " bytes, more than the " +
+                        std::to_string(kMaxManifestBytes) + " a manifest may have");
+  // The callback sees every event in order: it tracks the key path (for messages),
+  // refuses duplicate keys and nesting deeper than the limit before it is built.
+  std::vector<std::set<std::string>> keys;
+  std::vector<std::string> path;
+  auto where = [&] {
+    std::string p = "manifest";
+    for (const auto& k : path) p += k;
+    return p;
+  };
+  using Event = nlohmann::json::parse_event_t;
+  const nlohmann::json::parser_callback_t cb = [&](int depth, Event ev, nlohmann::json& parsed) -> bool {
+    if (depth > kMaxManifestDepth)
+      throw ManifestError(where() + ": nested deeper than " + std::to_string(kMaxManifestDepth) + " levels");
+    switch (ev) {
+      case Event::object_start:
+        keys.emplace_back();
+        path.emplace_back();
+        break;
+      case Event::array_start: path.emplace_back("[]"); break;
+      case Event::key: {
+        const std::string k = parsed.get<std::string>();
+        path.back() = "." + bounded_text(k, 40);
+        if (!keys.back().insert(k).second) throw ManifestError(where() + ": duplicate key (each key may appear once)");
+        break;
+      }
+      case Event::object_end:
+        if (!keys.empty()) keys.pop_back();
+        if (!path.empty()) path.pop_back();
+        break;
+      case Event::array_end:
+        if (!path.empty()) path.pop_back();
+        break;
+      case Event::value: break;
+    }
+    return true;
+  };
+  try {
+    return nlohmann::json::parse(text, cb);
+  } catch (const ManifestError&) {
+    throw;
+  } catch (const nlohmann::json::out_of_range& e) {
+    throw ManifestError(where() + ": number out of range (" + bounded_text(e.what(), 120) + ")");
+  } catch (const nlohmann::json::exception& e) {
+    throw ManifestError("invalid JSON at " + where() + ": " + bounded_text(e.what(), 160));
+  }
+}
 
 EntryReader::EntryReader(const nlohmann::json& entry, std::string path) : entry_(entry), path_(std::move(path)) {
   if (!entry_.is_object())
@@ -68,7 +164,7 @@ std::string EntryReader::choice(const std::string& key, const std::string& fallb
   if (std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
     std::string list;
     for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-    throw ManifestError(key_path(key) + " = \"" + v + "\" is not one of: " + list);
+    throw ManifestError(key_path(key) + " = \"" + bounded_text(v) + "\" is not one of: " + list);
   }
   return v;
 }
@@ -78,7 +174,7 @@ std::pair<double, double> EntryReader::range(const std::string& key, std::pair<d
   const auto* j = raw(key);
   if (!j) return fallback;
   if (!j->is_array() || j->size() != 2 || !(*j)[0].is_number() || !(*j)[1].is_number())
-    throw ManifestError(key_path(key) + ": expected [lo, hi] (two numbers), got " + j->dump());
+    throw ManifestError(key_path(key) + ": expected [lo, hi] (two numbers), got " + describe_json(*j));
   const double lo = (*j)[0].get<double>(), hi = (*j)[1].get<double>();
   const std::string dom = std::string(open_lo ? "(" : "[") + format_number(domain_lo) + ", " +
                           format_number(domain_hi) + (open_hi ? ")" : "]");
@@ -90,6 +186,9 @@ std::pair<double, double> EntryReader::range(const std::string& key, std::pair<d
   if (!(lo < hi))
     throw ManifestError(key_path(key) + " = [" + format_number(lo) + ", " + format_number(hi) +
                         "] is empty: need lo < hi");
+  if (std::isfinite(hi) && !(hi - lo >= 1e-9 * std::max(std::abs(lo), std::abs(hi))))
+    throw ManifestError(key_path(key) + " = [" + format_number(lo) + ", " + format_number(hi) +
+                        "] is too narrow to hold a grid (need hi - lo >= 1e-9 max(|lo|, |hi|))");
   return {lo, hi};
 }
 
@@ -98,7 +197,7 @@ void EntryReader::finish() const {
     if (std::find(read_.begin(), read_.end(), it.key()) == read_.end()) {
       std::string known;
       for (const auto& k : read_) known += (known.empty() ? "" : ", ") + k;
-      throw ManifestError(key_path(it.key()) + ": unknown key (known: " + known + ")");
+      throw ManifestError(key_path(bounded_text(it.key(), 40)) + ": unknown key (known: " + known + ")");
     }
   }
 }
@@ -119,8 +218,10 @@ std::vector<ManifestEntry> parse_manifest(const nlohmann::json& manifest) {
     if (!f) {
       std::string known;
       for (const auto& fam : all_families()) known += (known.empty() ? "" : ", ") + fam->name();
-      throw ManifestError("manifest.tables." + it.key() + ": unknown table family (known: " + known + ")");
+      throw ManifestError("manifest.tables." + bounded_text(it.key(), 40) + ": unknown table family (known: " + known +
+                          ")");
     }
+    check_no_duplicate_entries(it.value(), "manifest.tables." + it.key());
     f->check_entry(it.value());
     out.push_back({it.key(), it.value()});
   }
@@ -133,18 +234,20 @@ std::vector<ManifestEntry> parse_manifest(const nlohmann::json& manifest) {
 }
 
 std::vector<ManifestEntry> load_manifest(const std::filesystem::path& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw ManifestError("manifest '" + path.string() + "': cannot open");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ManifestError("manifest '" + path.string() + "': invalid JSON: " + e.what());
+  std::string text;
+  char buf[65536];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+    text.append(buf, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxManifestBytes) break;  // parse_manifest_text reports it
   }
   try {
-    return parse_manifest(j);
+    return parse_manifest(parse_manifest_text(text));
   } catch (const ManifestError& e) {
     throw ManifestError("manifest '" + path.string() + "': " + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    throw ManifestError("manifest '" + path.string() + "': " + bounded_text(e.what(), 160));
   }
 }
 

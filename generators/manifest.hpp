@@ -6,6 +6,12 @@
 //     "tables": { "<family>": { ...family entry... }, ... } }
 //
 // A family absent from "tables" is not generated.
+//
+// Limits (a manifest is small, hand-written input): at most kMaxManifestBytes bytes and
+// kMaxManifestDepth levels of nesting; duplicate keys (at any level) and duplicate
+// entries in a list (the same string twice, or two objects with the same "name") are
+// rejected; numbers outside the double range (1e400) are manifest errors naming the key;
+// no error message quotes more than a short, escaped excerpt of the offending value.
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -20,6 +26,19 @@ class ManifestError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+inline constexpr std::size_t kMaxManifestBytes = std::size_t(1) << 20;  // 1 MiB
+inline constexpr int kMaxManifestDepth = 32;
+
+// A short, single-line description of a JSON value for error messages: primitives up to
+// 40 characters (escaped, then "..."), containers as "an array of N elements" / "an
+// object of N keys".
+std::string describe_json(const nlohmann::json& j);
+// `s` escaped (control characters as \xNN) and cut to `max` characters with "...".
+std::string bounded_text(const std::string& s, std::size_t max = 60);
+// Parses manifest text (what load_manifest reads): size and depth limits, duplicate keys,
+// JSON errors as ManifestError naming the key path where it happened.
+nlohmann::json parse_manifest_text(const std::string& text);
 
 struct ManifestEntry {
   std::string family;
@@ -45,6 +64,9 @@ class EntryReader {
   bool boolean(const std::string& key, bool fallback);
   std::string choice(const std::string& key, const std::string& fallback, const std::vector<std::string>& allowed);
   // A [lo, hi] pair with domain_lo <= lo < hi <= domain_hi. open_lo/open_hi exclude the end.
+  // A range too narrow to hold a grid (hi - lo < 1e-9 max(|lo|, |hi|), i.e. fewer than
+  // about 4.5 million doubles apart) is refused here; the exact check for the chosen number
+  // of points is gen::check_grid (generators/preflight.hpp), run before a table is computed.
   std::pair<double, double> range(const std::string& key, std::pair<double, double> fallback, double domain_lo,
                                   double domain_hi, bool open_lo = false, bool open_hi = false);
   // The raw value (for family-specific structures such as lists of materials); marks it read.

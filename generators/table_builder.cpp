@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 
+#include "generators/preflight.hpp"
 #include "numerics/domain_check.hpp"
 
 namespace brdftab::gen {
@@ -54,6 +55,7 @@ void parallel_rows(std::size_t n, const GenerateContext& ctx, const std::string&
 
 BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const GenerateContext& ctx) {
   const auto t0 = std::chrono::steady_clock::now();
+  check_table_spec(spec);  // before any work: a grid the reader accepts, a bounded size
   const int rank = static_cast<int>(spec.axes.size());
   if (rank < 1 || rank > lookup::kMaxRank)
     throw std::invalid_argument("table '" + spec.dataset + "': rank " + std::to_string(rank) + " is outside 1..4");

@@ -6,6 +6,15 @@
 
 #include "generators/family.hpp"
 #include "generators/manifest.hpp"
+#include "generators/preflight.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+#include "cli_runner.hpp"
 
 using namespace brdftab::gen;
 using json = nlohmann::json;
@@ -74,4 +83,86 @@ TEST_CASE("a narrower range in a manifest gives a smaller table at the same erro
   CHECK(narrow.bytes < wide.bytes);
   CHECK(narrow.max_abs_error <= 1.5 * wide.max_abs_error);
   CHECK(narrow.max_abs_error > 0.1 * wide.max_abs_error);
+}
+
+namespace {
+std::string text_error(const std::string& text) {
+  try {
+    parse_manifest(parse_manifest_text(text));
+  } catch (const ManifestError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+}  // namespace
+
+TEST_CASE("manifest limits: depth, size, duplicate keys and entries, number range, bounded messages") {
+  // 100,000-deep nesting: refused at depth 33 while parsing, no recursion, no crash.
+  const std::string deep = "{\"schema_version\": 1, \"tables\": {\"demo\": {\"y_range\": " + std::string(100000, '[') +
+                           std::string(100000, ']') + "}}}";
+  const auto msg = text_error(deep);
+  CHECK(has(msg, "nested deeper than 32 levels"));
+  CHECK(msg.size() < 300);
+  CHECK(has(text_error(std::string(kMaxManifestBytes + 1, ' ')), "more than the 1048576 a manifest may have"));
+  CHECK(text_error(R"({"schema_version": 1, "tables": {"demo": {"x_points": 10, "x_points": 12}}})") ==
+        "manifest.tables.demo.x_points: duplicate key (each key may appear once)");
+  CHECK(text_error(R"({"schema_version": 1, "tables": {"demo": {}, "demo": {}}})") ==
+        "manifest.tables.demo: duplicate key (each key may appear once)");
+  CHECK(text_error(R"({"schema_version": 1, "tables": {"hfunc": {"functions": ["iso", "ls0", "iso"]}}})") ==
+        "manifest.tables.hfunc.functions[2]: duplicate entry \"iso\" (each entry may appear once)");
+  const auto big = text_error(R"({"schema_version": 1, "tables": {"demo": {"x_points": 1e400}}})");
+  CHECK(has(big, "manifest.tables.demo.x_points: number out of range"));
+  // Offending values are quoted short and escaped, never in full.
+  const std::string huge(50000, 'q');
+  const auto m1 = text_error("{\"schema_version\": 1, \"tables\": {\"demo\": {\"precision\": \"" + huge + "\"}}}");
+  CHECK(has(m1, "tables.demo.precision = \"qqqq"));
+  CHECK(m1.size() < 200);
+  const auto m2 = text_error("{\"schema_version\": 1, \"tables\": {\"demo\": {\"y_range\": [" +
+                             std::string(20000, '1') + ", 2, 3]}}}");
+  CHECK(m2.size() < 300);
+  const auto m3 = text_error("{\"schema_version\": 1, \"tables\": {\"demo\": {\"y_range\": [[[1]]]}}}");
+  CHECK(has(m3, "expected [lo, hi] (two numbers), got an array of 1 elements"));
+  const auto m4 = text_error("{\"schema_version\": 1, \"tables\": {\"demo\": {\"" + huge + "\": 1}}}");
+  CHECK(m4.size() < 300);
+  const auto m5 = text_error("{\"schema_version\": 1, \"tables\": {\"demo\": {\"precision\": \"a\\u001b[31m\"}}}");
+  CHECK(has(m5, "a\\x1b[31m"));
+  CHECK_FALSE(has(m5, "\x1b"));
+  CHECK(has(text_error("{\"schema_version\": 1, \"tables\": " + huge), "invalid JSON at manifest"));
+  CHECK(text_error("{\"schema_version\": 1, \"tables\": " + huge).size() < 300);
+}
+
+TEST_CASE("manifest: ranges too narrow for a grid are refused before computing, oversized tables need --force") {
+  // One ulp wide: refused by the range reader.
+  CHECK(has(error_of(with_demo({{"y_range", {0.5, std::nextafter(0.5, 1.0)}}})), "is too narrow to hold a grid"));
+  // Through the CLI: exit 2 naming the key, nothing computed or written.
+  const std::filesystem::path dir = std::filesystem::path(BRDFTAB_TEST_TMP) / ("preflight_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "m.json") << R"({"schema_version": 1, "tables": {"demo": {"y_range": [0.5, 0.5000000000000001]}}})";
+  std::ofstream(dir / "big.json") << R"({"schema_version": 1, "tables": {"demo": {"x_points": 1e400}}})";
+  auto r = brdftab::testing::run_cli("generate -q --manifest '" + (dir / "m.json").string() + "' --out '" +
+                                     (dir / "out").string() + "'");
+  CHECK(r.status == 2);
+  CHECK(has(r.err, "tables.demo.y_range = [0.5, 0.5000000000000001] is too narrow to hold a grid"));
+  r = brdftab::testing::run_cli("generate -q --manifest '" + (dir / "big.json").string() + "' --out '" +
+                                (dir / "out").string() + "'");
+  CHECK(r.status == 2);
+  CHECK(has(r.err, "manifest.tables.demo.x_points: number out of range"));
+  CHECK_FALSE(std::filesystem::exists(dir / "out" / "demo.h5"));
+  // Size: a table above the pre-flight limit is refused unless forced.
+  TableSpec spec;
+  spec.dataset = "big";
+  spec.axes = {{"a", brdftab::lookup::Transform::identity, 0, 1, 4096, 1.0, ""}, {"b", brdftab::lookup::Transform::identity, 0, 1, 2048, 1.0, ""}};
+  CHECK_THROWS_WITH_AS(check_table_spec(spec),
+                       doctest::Contains("above the limit of 4194304 values; set BRDFTAB_GENERATE_FORCE=1"),
+                       ManifestError);
+  ::setenv("BRDFTAB_GENERATE_FORCE", "1", 1);
+  CHECK_NOTHROW(check_table_spec(spec));
+  spec.axes.push_back({"c", brdftab::lookup::Transform::identity, 0, 1, 100, 1.0, ""});
+  CHECK_THROWS_WITH_AS(check_table_spec(spec), doctest::Contains("more than the 16777216 a table file may hold"),
+                       ManifestError);
+  ::unsetenv("BRDFTAB_GENERATE_FORCE");
+  spec.axes = {{"a", brdftab::lookup::Transform::identity, 0.5, std::nextafter(0.5, 1.0), 3, 1.0, ""}};
+  CHECK_THROWS_WITH_AS(check_table_spec(spec), doctest::Contains("too narrow"), ManifestError);
 }

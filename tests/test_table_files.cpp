@@ -17,6 +17,7 @@
 #include "lookup/table_set.hpp"
 #include "tablewrite/table_writer.hpp"
 #include "tablewrite/temp_file.hpp"
+#include "table_file_tamper.hpp"
 
 using namespace brdftab;
 namespace fs = std::filesystem;
@@ -56,7 +57,10 @@ void set_int_attribute(const fs::path& file, const std::string& dataset, const s
   H5Sclose(sp);
   H5Dclose(d);
   H5Fclose(f);
+  testing::reseal(file);  // a hostile author can write a matching digest: the reader must still check
 }
+
+const lookup::OpenOptions kForeign{true};
 
 std::string error_of(const std::function<void()>& f) {
   try {
@@ -126,11 +130,13 @@ TEST_CASE("missing, corrupt, truncated and wrong-schema files raise clear TableF
   CHECK(error_of([&] { lookup::load_table(dir / "nope.h5", "H_test"); }) ==
         "table file '" + (dir / "nope.h5").string() + "': file not found");
 
-  {  // Not HDF5 at all.
+  {  // Not HDF5 at all: no digest, so refused before parsing; when foreign files are allowed, HDF5 says no.
     std::ofstream(dir / "garbage.h5") << "this is not an HDF5 file";
     const auto msg = error_of([&] { lookup::load_table(dir / "garbage.h5", "H_test"); });
     CHECK(msg.find("garbage.h5") != std::string::npos);
-    CHECK(msg.find("not a readable HDF5 file") != std::string::npos);
+    CHECK(msg.find("rejected before parsing: no brdftab digest") != std::string::npos);
+    const auto msg2 = error_of([&] { lookup::load_table(dir / "garbage.h5", "H_test", kForeign); });
+    CHECK(msg2.find("not a readable HDF5 file") != std::string::npos);
   }
   {  // Truncated at several lengths: always an error, never a crash.
     const auto size = fs::file_size(dir / "good.h5");
@@ -140,10 +146,12 @@ TEST_CASE("missing, corrupt, truncated and wrong-schema files raise clear TableF
       const auto msg = error_of([&] { lookup::load_table(dir / "cut.h5", "H_test"); });
       INFO("truncated to " << frac);
       CHECK(msg.find("cut.h5") != std::string::npos);
+      CHECK(msg.find("rejected before parsing") != std::string::npos);
     }
   }
-  {  // Bytes flipped inside the file: error or the same values, never a crash or garbage accepted silently.
+  {  // Bytes changed anywhere in the file: rejected by the digest before HDF5 parses it, unless unchanged.
     const auto size = fs::file_size(dir / "good.h5");
+    const auto original = testing::read_bytes(dir / "good.h5");
     for (std::uintmax_t pos = 0; pos < size; pos += size / 23) {
       fs::copy_file(dir / "good.h5", dir / "flip.h5", fs::copy_options::overwrite_existing);
       std::fstream f(dir / "flip.h5", std::ios::in | std::ios::out | std::ios::binary);
@@ -151,10 +159,12 @@ TEST_CASE("missing, corrupt, truncated and wrong-schema files raise clear TableF
       const char junk[8] = {'\x7f', '\x00', '\x13', '\xff', '\x42', '\x01', '\x80', '\x55'};
       f.write(junk, 8);
       f.close();
+      const bool changed = testing::read_bytes(dir / "flip.h5") != original;
       try {
         auto t = lookup::load_table(dir / "flip.h5", "H_test");
-        CHECK(t.table.rank() == 2);  // loaded: every value was validated as finite on a valid grid
+        CHECK_FALSE(changed);  // accepted only if the bytes are the original ones
       } catch (const lookup::TableFileError& e) {
+        CHECK(changed);
         CHECK(std::string(e.what()).find("flip.h5") != std::string::npos);
       }
     }
@@ -178,8 +188,19 @@ TEST_CASE("missing, corrupt, truncated and wrong-schema files raise clear TableF
     H5Dclose(d);
     H5Sclose(sp);
     H5Fclose(f);
-    set_int_attribute(dir / "plain.h5", "H_test", "schema_version", 1);
-    const auto msg = error_of([&] { lookup::load_table(dir / "plain.h5", "H_test"); });
+    hid_t f2 = H5Fopen((dir / "plain.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    hid_t d2 = H5Dopen2(f2, "H_test", H5P_DEFAULT);
+    hid_t sp2 = H5Screate(H5S_SCALAR);
+    hid_t a2 = H5Acreate2(d2, "schema_version", H5T_STD_I64LE, sp2, H5P_DEFAULT, H5P_DEFAULT);
+    const long long one = 1;
+    H5Awrite(a2, H5T_NATIVE_LLONG, &one);
+    H5Aclose(a2);
+    H5Sclose(sp2);
+    H5Dclose(d2);
+    H5Fclose(f2);
+    CHECK(error_of([&] { lookup::load_table(dir / "plain.h5", "H_test"); }).find("no brdftab digest") !=
+          std::string::npos);
+    const auto msg = error_of([&] { lookup::load_table(dir / "plain.h5", "H_test", kForeign); });
     CHECK(msg.find("'interpolation'") != std::string::npos);
   }
 }
@@ -195,6 +216,7 @@ TEST_CASE("an axis that is not monotonic or not regular in its transform is reje
   std::swap(swapped[3], swapped[4]);
   H5Dwrite(a, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, swapped.data());
   H5Fflush(f, H5F_SCOPE_GLOBAL);
+  testing::reseal(dir / "t.h5");
   const auto msg1 = error_of([&] { lookup::load_table(dir / "t.h5", "H_test"); });
   CHECK(msg1.find("axis 'c' (dimension 0) is not strictly increasing at index 3") != std::string::npos);
   std::vector<double> irregular = c;
@@ -202,6 +224,7 @@ TEST_CASE("an axis that is not monotonic or not regular in its transform is reje
   H5Dwrite(a, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, irregular.data());
   H5Dclose(a);
   H5Fclose(f);
+  testing::reseal(dir / "t.h5");
   const auto msg2 = error_of([&] { lookup::load_table(dir / "t.h5", "H_test"); });
   CHECK(msg2.find("is not a regular grid in sqrt(1-x) at index 4") != std::string::npos);
 }
@@ -288,7 +311,7 @@ TEST_CASE("degenerate shapes and mistyped attributes are reported, not crashed o
     H5Dclose(d);
     H5Sclose(sp);
     H5Fclose(f);
-    const auto msg = error_of([&] { lookup::load_table(dir / "one.h5", "H_test"); });
+    const auto msg = error_of([&] { lookup::load_table(dir / "one.h5", "H_test", kForeign); });
     CHECK(msg.find("dimension 0 has length 1") != std::string::npos);
   }
   {
@@ -304,8 +327,10 @@ TEST_CASE("degenerate shapes and mistyped attributes are reported, not crashed o
     H5Sclose(sp);
     H5Dclose(d);
     H5Fclose(f);
+    testing::reseal(dir / "t.h5");
     const auto msg = error_of([&] { lookup::load_table(dir / "t.h5", "H_test"); });
-    CHECK(msg.find("schema_version is a floating-point number, expected the integer 1") != std::string::npos);
+    CHECK(msg.find("attribute 'schema_version' has the wrong type (a floating-point number, expected an integer)") !=
+          std::string::npos);
   }
 }
 

@@ -86,6 +86,14 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
     try {
       auto s = gen::find_family(e.family)->generate(e.entry, ctx);
       summaries.insert(summaries.end(), s.begin(), s.end());
+    } catch (const gen::ManifestError& ex) {
+      progress.finish_line();
+      err << "brdftab generate: family '" << e.family << "': " << ex.what() << "\n";
+      return 2;
+    } catch (const std::bad_alloc&) {
+      progress.finish_line();
+      err << "brdftab generate: family '" << e.family << "' failed: out of memory\n";
+      return 1;
     } catch (const std::exception& ex) {
       progress.finish_line();
       err << "brdftab generate: family '" << e.family << "' failed: " << ex.what() << "\n";

@@ -9,6 +9,9 @@
 namespace brdftab::cli {
 
 std::vector<std::string> split_csv_line(std::string_view line);
+// Text safe to print on a terminal: control characters (< 0x20, 0x7f) become \n, \t,
+// \r or \xNN, and a backslash becomes \\. Bytes >= 0x80 are kept (UTF-8).
+std::string escape_control(std::string_view s);
 // Parses the whole cell as a double (strtod); nullopt if it is not a number.
 std::optional<double> parse_number(const std::string& cell);
 

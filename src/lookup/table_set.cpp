@@ -2,7 +2,7 @@
 
 namespace brdftab::lookup {
 
-TableSet::TableSet(std::filesystem::path dir) : dir_(std::move(dir)) {
+TableSet::TableSet(std::filesystem::path dir, OpenOptions options) : dir_(std::move(dir)), options_(options) {
   std::error_code ec;
   if (!std::filesystem::is_directory(dir_, ec))
     throw TableFileError("table folder '" + dir_.string() + "' does not exist or is not a directory");
@@ -13,7 +13,9 @@ const LoadedTable& TableSet::get(const std::string& file, const std::string& dat
   std::lock_guard lock(mutex_);
   auto it = loaded_.find(key);
   if (it != loaded_.end()) return *it->second;
-  auto loaded = std::make_unique<LoadedTable>(load_table(dir_ / file, dataset));
+  auto f = files_.find(file);
+  if (f == files_.end()) f = files_.emplace(file, VerifiedFile::open(dir_ / file, options_)).first;
+  auto loaded = std::make_unique<LoadedTable>(f->second.load_table(dataset));
   return *loaded_.emplace(key, std::move(loaded)).first->second;
 }
 

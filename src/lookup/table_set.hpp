@@ -1,7 +1,10 @@
 #pragma once
 // A lazy set of tables: open a folder, load a dataset on first use. A program pays only
 // for the tables it touches. get() is thread-safe; the returned reference stays valid for
-// the lifetime of the set, and queries on it need no locking.
+// the lifetime of the set, and queries on it need no locking. Files are verified as
+// load_table does (digest first; foreign files only with options.allow_foreign or
+// BRDFTAB_ALLOW_FOREIGN=1). Each file is read and its digest checked once; its bytes
+// stay in memory for the lifetime of the set (tables are kilobytes to megabytes).
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -16,17 +19,20 @@ class TableSet {
  public:
   // Does not touch the disk until a table is requested. Throws TableFileError if dir is
   // not a directory.
-  explicit TableSet(std::filesystem::path dir);
+  explicit TableSet(std::filesystem::path dir, OpenOptions options = {});
   const std::filesystem::path& dir() const { return dir_; }
   // Loads <dir>/<file>, dataset `dataset` on first call. Throws TableFileError.
   const LoadedTable& get(const std::string& file, const std::string& dataset);
   const Table& table(const std::string& file, const std::string& dataset) { return get(file, dataset).table; }
   std::size_t loaded_count() const;
+  const OpenOptions& options() const { return options_; }
 
  private:
   std::filesystem::path dir_;
+  OpenOptions options_;
   mutable std::mutex mutex_;
   std::map<std::string, std::unique_ptr<LoadedTable>> loaded_;
+  std::map<std::string, VerifiedFile> files_;  // each file read and verified once
 };
 
 }  // namespace brdftab::lookup

@@ -1,13 +1,22 @@
 #include "tablewrite/table_writer.hpp"
 
+#include <fcntl.h>
 #include <hdf5.h>
 #include <hdf5_hl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <ctime>
+#include <limits>
 #include <stdexcept>
 
-#include "lookup/detail/hdf5_handle.hpp"
+#include "lookup/hdf5_util.hpp"
+#include "lookup/table_digest.hpp"
 #include "lookup/table_file.hpp"
 #include "tablewrite/temp_file.hpp"
 
@@ -15,39 +24,14 @@
 
 namespace brdftab::tablewrite {
 
-using lookup::detail::Hid;
+namespace hdf5 = lookup::hdf5;
+using hdf5::check;
+using hdf5::Hid;
+using WriteError = hdf5::Error;
 
 namespace {
 
-struct WriteError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw WriteError(what);
-}
-
-void write_attribute(hid_t obj, const std::string& name, const AttributeValue& value) {
-  Hid space(H5Screate(H5S_SCALAR), H5Sclose);
-  if (auto s = std::get_if<std::string>(&value)) {
-    Hid type(H5Tcopy(H5T_C_S1), H5Tclose);
-    check(H5Tset_size(type, s->size() + 1), "string type for attribute " + name);
-    check(H5Tset_strpad(type, H5T_STR_NULLTERM), "string type for attribute " + name);
-    check(H5Tset_cset(type, H5T_CSET_UTF8), "string type for attribute " + name);
-    Hid a(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-    if (!a.valid()) throw WriteError("cannot create attribute " + name);
-    check(H5Awrite(a, type, s->c_str()), "cannot write attribute " + name);
-  } else if (auto d = std::get_if<double>(&value)) {
-    Hid a(H5Acreate2(obj, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-    if (!a.valid()) throw WriteError("cannot create attribute " + name);
-    check(H5Awrite(a, H5T_NATIVE_DOUBLE, d), "cannot write attribute " + name);
-  } else {
-    const long long v = std::get<long long>(value);
-    Hid a(H5Acreate2(obj, name.c_str(), H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-    if (!a.valid()) throw WriteError("cannot create attribute " + name);
-    check(H5Awrite(a, H5T_NATIVE_LLONG, &v), "cannot write attribute " + name);
-  }
-}
+std::atomic<std::size_t> g_fail_after{std::numeric_limits<std::size_t>::max()};
 
 std::string utc_now() {
   const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -61,11 +45,15 @@ std::string utc_now() {
 void write_dataset(hid_t file, hid_t axes_group, const DatasetToWrite& ds, const std::string& created) {
   const lookup::Table& t = ds.table;
   const std::string& name = t.name();
-  if (name.empty() || name.find('/') != std::string::npos || name == "axes")
+  if (name.empty() || name.size() > 255 || name.find('/') != std::string::npos || name == "axes" || name == "." ||
+      name == "..")
     throw WriteError("invalid dataset name '" + name + "'");
   const int rank = t.rank();
   hsize_t dims[lookup::kMaxRank];
   for (int d = 0; d < rank; ++d) dims[d] = static_cast<hsize_t>(t.axis(d).n);
+  if (t.size() > lookup::kMaxTableValues)
+    throw WriteError("dataset " + name + " has " + std::to_string(t.size()) + " values, more than the " +
+                     std::to_string(lookup::kMaxTableValues) + " a table file may hold");
 
   // Values, read back from the table so that what is written is what the table holds.
   std::vector<double> values(t.size());
@@ -79,6 +67,7 @@ void write_dataset(hid_t file, hid_t axes_group, const DatasetToWrite& ds, const
   }
   const bool f32 = t.storage() == lookup::Storage::float32;
   Hid space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
+  if (!space.valid()) throw WriteError("cannot create the dataspace of " + name);
   Hid dset(H5Dcreate2(file, name.c_str(), f32 ? H5T_IEEE_F32LE : H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
                       H5P_DEFAULT),
            H5Dclose);
@@ -95,6 +84,7 @@ void write_dataset(hid_t file, hid_t axes_group, const DatasetToWrite& ds, const
     for (int i = 0; i < a.n; ++i) x[i] = a.value(i);
     hsize_t n = static_cast<hsize_t>(a.n);
     Hid aspace(H5Screate_simple(1, &n, nullptr), H5Sclose);
+    if (!aspace.valid()) throw WriteError("cannot create the dataspace of axis " + a.name);
     Hid ad(H5Dcreate2(group, a.name.c_str(), H5T_IEEE_F64LE, aspace, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
            H5Dclose);
     if (!ad.valid()) throw WriteError("cannot create axis " + a.name + " of " + name);
@@ -102,10 +92,10 @@ void write_dataset(hid_t file, hid_t axes_group, const DatasetToWrite& ds, const
     check(H5DSset_scale(ad, a.name.c_str()), "cannot make axis " + a.name + " a dimension scale");
     check(H5DSattach_scale(dset, ad, static_cast<unsigned>(d)), "cannot attach axis " + a.name);
     check(H5DSset_label(dset, static_cast<unsigned>(d), a.name.c_str()), "cannot label dimension " + a.name);
-    write_attribute(ad, "name", a.name);
-    write_attribute(ad, "transform", std::string(lookup::transform_name(a.transform)));
-    write_attribute(ad, "units", a.units);
-    write_attribute(ad, "scale", a.scale);
+    hdf5::write_attribute(ad, "name", a.name);
+    hdf5::write_attribute(ad, "transform", std::string(lookup::transform_name(a.transform)));
+    hdf5::write_attribute(ad, "units", a.units);
+    hdf5::write_attribute(ad, "scale", a.scale);
   }
 
   std::map<std::string, AttributeValue> attrs = ds.attributes;
@@ -115,39 +105,151 @@ void write_dataset(hid_t file, hid_t axes_group, const DatasetToWrite& ds, const
   attrs["storage"] = std::string(lookup::storage_name(t.storage()));
   attrs.try_emplace("source_commit", std::string(BRDFTAB_SOURCE_COMMIT));
   attrs.try_emplace("created_utc", created);
-  for (const auto& [k, v] : attrs) write_attribute(dset, k, v);
+  for (const auto& [k, v] : attrs) hdf5::write_attribute(dset, k, v);
+}
+
+// Builds the HDF5 file in memory (core driver, no backing store) and returns its bytes
+// preceded by kDigestBlockBytes zero bytes for the user block (HDF5's file image starts
+// at the superblock; the superblock records the user block size).
+std::vector<unsigned char> build_hdf5_image(const std::vector<DatasetToWrite>& datasets,
+                                            const std::map<std::string, AttributeValue>& file_attributes) {
+  static std::atomic<unsigned> counter{0};
+  std::lock_guard lock(hdf5::mutex());
+  hdf5::silence_errors();
+  Hid fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+  Hid fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (!fcpl.valid() || !fapl.valid()) throw WriteError("cannot create HDF5 property lists");
+  check(H5Pset_userblock(fcpl, lookup::kDigestBlockBytes), "cannot reserve the digest block");
+  check(H5Pset_fapl_core(fapl, std::size_t(1) << 20, 0), "cannot select the in-memory HDF5 driver");
+  const std::string name = "brdftab-image-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  Hid file(H5Fcreate(name.c_str(), H5F_ACC_EXCL, fcpl, fapl), H5Fclose);
+  if (!file.valid()) throw WriteError("cannot create the in-memory HDF5 file");
+  const std::string created = utc_now();
+  std::map<std::string, AttributeValue> fattrs = file_attributes;
+  fattrs["schema_version"] = lookup::kSchemaVersion;
+  fattrs.try_emplace("created_utc", created);
+  for (const auto& [k, v] : fattrs) hdf5::write_attribute(file, k, v);
+  {
+    Hid axes(H5Gcreate2(file, "axes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    if (!axes.valid()) throw WriteError("cannot create group /axes");
+    for (const auto& ds : datasets) write_dataset(file, axes, ds, created);
+  }
+  check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush the in-memory file");
+  const ssize_t size = H5Fget_file_image(file, nullptr, 0);
+  if (size <= 8) throw WriteError("cannot get the file image");
+  std::vector<unsigned char> image(lookup::kDigestBlockBytes + static_cast<std::size_t>(size), 0);
+  if (H5Fget_file_image(file, image.data() + lookup::kDigestBlockBytes, static_cast<std::size_t>(size)) != size)
+    throw WriteError("cannot copy the file image");
+  check(H5Fclose(file.release()), "cannot close the in-memory file");
+  static const unsigned char signature[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+  if (std::memcmp(image.data() + lookup::kDigestBlockBytes, signature, 8) != 0)
+    throw WriteError("the HDF5 superblock is not right after the user block");
+  return image;
+}
+
+std::string errno_text(int e) { return std::strerror(e); }
+
+// Writes `bytes` to a new file `p` (must not exist), syncs and closes it; throws with
+// the system's reason. SIGXFSZ is ignored meanwhile so that a file size limit is an
+// error (EFBIG), not a kill.
+void write_new_file(const std::filesystem::path& p, const std::vector<unsigned char>& bytes) {
+  struct sigaction ign {}, old {};
+  ign.sa_handler = SIG_IGN;
+  sigemptyset(&ign.sa_mask);
+  sigaction(SIGXFSZ, &ign, &old);
+  struct Restore {
+    struct sigaction* old;
+    ~Restore() { sigaction(SIGXFSZ, old, nullptr); }
+  } restore{&old};
+
+  const int fd = ::open(p.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (fd < 0) throw std::runtime_error("cannot create '" + p.string() + "': " + errno_text(errno));
+  std::size_t done = 0;
+  const std::size_t fail_after = g_fail_after.load();
+  int error = 0;
+  while (done < bytes.size()) {
+    std::size_t chunk = bytes.size() - done;
+    if (fail_after != std::numeric_limits<std::size_t>::max()) {
+      if (done >= fail_after) {
+        error = ENOSPC;
+        break;
+      }
+      chunk = std::min(chunk, fail_after - done);
+    }
+    const ssize_t w = ::write(fd, bytes.data() + done, chunk);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) {
+      error = w < 0 ? errno : ENOSPC;
+      break;
+    }
+    done += static_cast<std::size_t>(w);
+  }
+  if (error == 0 && ::fsync(fd) != 0) error = errno;
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) throw std::runtime_error("cannot write '" + p.string() + "': " + errno_text(error));
 }
 
 }  // namespace
 
+std::vector<unsigned char> table_file_image(const std::vector<DatasetToWrite>& datasets,
+                                            const std::map<std::string, AttributeValue>& file_attributes) {
+  for (std::size_t i = 0; i < datasets.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (datasets[i].table.name() == datasets[j].table.name())
+        throw WriteError("dataset name '" + datasets[i].table.name() + "' appears twice");
+  std::vector<unsigned char> image = build_hdf5_image(datasets, file_attributes);
+  const std::string block = lookup::make_digest_block(
+      std::span<const unsigned char>(image.data() + lookup::kDigestBlockBytes, image.size() - lookup::kDigestBlockBytes));
+  std::memcpy(image.data(), block.data(), lookup::kDigestBlockBytes);
+  return image;
+}
+
+std::size_t remove_stale_temporaries(const std::filesystem::path& dir) {
+  std::size_t removed = 0;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string n = it->path().filename().string();
+    // ".NAME.tmp.PID.N"
+    if (n.size() < 8 || n[0] != '.') continue;
+    const auto dot_n = n.rfind('.');
+    if (dot_n == std::string::npos || dot_n == 0) continue;
+    const auto dot_pid = n.rfind('.', dot_n - 1);
+    if (dot_pid == std::string::npos || dot_pid < 5 || n.compare(dot_pid - 4, 4, ".tmp") != 0) continue;
+    auto digits = [](const std::string& s) {
+      return !s.empty() && s.size() <= 9 && s.find_first_not_of("0123456789") == std::string::npos;
+    };
+    const std::string pid_s = n.substr(dot_pid + 1, dot_n - dot_pid - 1), num_s = n.substr(dot_n + 1);
+    if (!digits(pid_s) || !digits(num_s)) continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(pid_s));
+    if (pid <= 0 || pid == ::getpid()) continue;
+    if (::kill(pid, 0) == 0 || errno != ESRCH) continue;  // alive (or not ours to judge): leave it
+    std::error_code sec;
+    if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(it->path(), sec))) continue;
+    if (std::filesystem::remove(it->path(), sec)) ++removed;
+  }
+  return removed;
+}
+
+void inject_write_failure_after(std::size_t bytes) { g_fail_after.store(bytes); }
+
 void write_table_file(const std::filesystem::path& path, const std::vector<DatasetToWrite>& datasets,
                       const std::map<std::string, AttributeValue>& file_attributes) {
-  std::error_code ec;
-  const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  std::filesystem::create_directories(dir, ec);
-  TempFile temp(path);
   try {
-    std::lock_guard lock(lookup::detail::hdf5_mutex());
-    lookup::detail::silence_hdf5_errors();
-    {
-      // Exclusive create: never follows or reuses an existing path.
-      Hid file(H5Fcreate(temp.path().c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-      if (!file.valid()) throw WriteError("cannot create the file (folder not writable?)");
-      const std::string created = utc_now();
-      std::map<std::string, AttributeValue> fattrs = file_attributes;
-      fattrs["schema_version"] = lookup::kSchemaVersion;
-      fattrs.try_emplace("created_utc", created);
-      for (const auto& [k, v] : fattrs) write_attribute(file, k, v);
-      Hid axes(H5Gcreate2(file, "axes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-      if (!axes.valid()) throw WriteError("cannot create group /axes");
-      for (const auto& ds : datasets) write_dataset(file, axes, ds, created);
-      check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush");
-      check(H5Fclose(file.release()), "cannot close (disk full?)");
-    }
+    const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error("cannot create the folder '" + dir.string() + "': " + ec.message());
+    if (!std::filesystem::is_directory(dir, ec)) throw std::runtime_error("'" + dir.string() + "' is not a folder");
+    remove_stale_temporaries(dir);
+    const std::vector<unsigned char> image = table_file_image(datasets, file_attributes);
+    TempFile temp(path);
+    write_new_file(temp.path(), image);
+    temp.commit();
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error("writing table file '" + path.string() + "': out of memory");
   } catch (const std::exception& e) {
     throw std::runtime_error("writing table file '" + path.string() + "': " + e.what());
   }
-  temp.commit();
 }
 
 }  // namespace brdftab::tablewrite

@@ -1,18 +1,28 @@
 #pragma once
-// Writes tables to HDF5, atomically: everything goes to a temporary file in the target
-// folder, which is renamed into place only when complete. An exception, SIGINT or
-// SIGTERM before the rename leaves no partial table behind (the temporary is removed).
+// Writes tables to HDF5, atomically and sealed with a content digest.
+//
+// The HDF5 file is built in memory (HDF5 core driver, never touching the disk), with a
+// 512-byte user block that receives the SHA-256 digest of everything after it (see
+// lookup/table_digest.hpp). The bytes are then written with plain POSIX I/O to a
+// temporary file in the target folder, synced, and renamed into place. Any failure (disk
+// full, read-only or missing folder, file size limit, an HDF5 error) throws
+// std::runtime_error naming the file and the cause, and leaves no partial or temporary
+// file; a previous table at the destination is untouched. An exception, SIGINT, SIGTERM or
+// SIGHUP before the rename leaves no partial table either. Temporaries left by killed runs
+// (".NAME.tmp.PID.N" whose process no longer exists) are removed by the next write into
+// the same folder.
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <string>
-#include <variant>
 #include <vector>
 
+#include "lookup/attribute.hpp"
 #include "lookup/table.hpp"
 
 namespace brdftab::tablewrite {
 
-using AttributeValue = std::variant<std::string, double, long long>;
+using AttributeValue = lookup::Attribute;
 
 // One dataset: the table (axes + values) and its attributes. The writer adds the
 // standard ones (schema_version, quantity, interpolation, storage, source_commit,
@@ -25,8 +35,20 @@ struct DatasetToWrite {
 };
 
 // Writes all datasets into `path` atomically (temporary file + rename).
-// Throws std::runtime_error naming the file on any HDF5 failure.
+// Throws std::runtime_error naming the file on any failure.
 void write_table_file(const std::filesystem::path& path, const std::vector<DatasetToWrite>& datasets,
                       const std::map<std::string, AttributeValue>& file_attributes = {});
+
+// The sealed file image write_table_file would write (digest block + HDF5 file).
+std::vector<unsigned char> table_file_image(const std::vector<DatasetToWrite>& datasets,
+                                            const std::map<std::string, AttributeValue>& file_attributes = {});
+
+// Removes temporaries of killed runs in `dir` (".NAME.tmp.PID.N", PID not running);
+// returns how many. Called by write_table_file.
+std::size_t remove_stale_temporaries(const std::filesystem::path& dir);
+
+// Test hook (fault injection): table-file writes fail with ENOSPC ("No space left on
+// device") once `bytes` bytes of a file have been written. Pass SIZE_MAX to turn off.
+void inject_write_failure_after(std::size_t bytes);
 
 }  // namespace brdftab::tablewrite
