@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/foreign_isolation.hpp"
 #include "cli/quantity.hpp"
 #include "lookup/default_tables.hpp"
 #include "lookup/version.hpp"
@@ -31,6 +32,7 @@ std::filesystem::path default_tables_dir() {
 int run_main(int argc, char** argv) {
   CLI::App app{"brdftab: exact numerics and HDF5 lookup tables for BRDF models"};
   app.require_subcommand(1);
+  app.fallthrough();  // global options (--allow-foreign) may follow the subcommand
   app.set_version_flag("--version", std::string("brdftab ") + kVersion);
 
   GenerateOptions gen;
@@ -69,6 +71,10 @@ int run_main(int argc, char** argv) {
   i->add_option("file", info_files, "table file(s) (.h5)")->required();
   i->add_flag("--markdown", info_markdown, "one Markdown table row per dataset (accepts several files)");
 
+  bool allow_foreign = false, force = false;
+  app.add_flag("--allow-foreign", allow_foreign,
+               "read table files without a brdftab digest (each is validated in a child process first)");
+  g->add_flag("--force", force, "generate tables above the pre-flight size limit (4M values)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& ok) {  // --help, --version
@@ -77,6 +83,11 @@ int run_main(int argc, char** argv) {
     app.exit(err);  // prints CLI11's message
     return 2;       // usage errors are bad input: exit status 2, as documented
   }
+  // The library reads these switches from the environment (docs/reliability.md).
+  if (allow_foreign) ::setenv("BRDFTAB_ALLOW_FOREIGN", "1", 1);
+  if (force) ::setenv("BRDFTAB_GENERATE_FORCE", "1", 1);
+  // Foreign files (no digest) are parsed first in a child with time and memory limits.
+  install_foreign_file_isolation();
   if (ev.tables_dir.empty()) ev.tables_dir = default_tables_dir();
   if (va.tables_dir.empty()) va.tables_dir = default_tables_dir();
   if (be.tables_dir.empty()) be.tables_dir = default_tables_dir();
