@@ -50,7 +50,8 @@ TEST_CASE("microfacet_albedo: visible-normal normalization Integral D G1 <o.h>+ 
 TEST_CASE("microfacet_albedo: incoming-direction quadrature vs half-vector quadrature to 1e-10") {
   struct Case { MicrofacetNdf ndf; double mu; };
   double worst = 0.0;
-  for (const Case& c : {Case{{NdfKind::ggx, 0.01}, 0.05}, Case{{NdfKind::ggx, 1.0}, 1e-4}, Case{{NdfKind::beckmann, 0.4}, 0.01}}) {
+  for (const Case& c : {Case{{NdfKind::ggx, 0.01}, 0.05}, Case{{NdfKind::ggx, 1.0}, 1e-4}, Case{{NdfKind::beckmann, 0.4}, 0.01},
+                        Case{{NdfKind::ggx, 0.5}, 1.0}}) {
     const MicrofacetAlbedo a = microfacet_albedo(c.ndf, c.mu), b = microfacet_albedo_half_vector(c.ndf, c.mu);
     CAPTURE(ndf_name(c.ndf.kind));
     CAPTURE(c.ndf.alpha);
@@ -117,6 +118,16 @@ TEST_CASE("microfacet_albedo: Monte Carlo (fixed seed) agrees within 5 sigma") {
     MESSAGE("MC " << mean << " +- " << sigma << " vs " << exact);
     CHECK(std::abs(mean - exact) < 5 * sigma);
   }
+}
+
+TEST_CASE("microfacet_albedo: closed form at normal incidence, GGX alpha = 1: E = 1 - ln 2") {
+  // mu_o = 1: Lambda_o = 0, i = 2 cos(theta_h) h - n, mu_i = cos(2 theta_h), valid for
+  // t = tan(theta_h) < 1. With alpha = 1: tan(theta_i) = 2t/(1 - t^2), Lambda_i =
+  // (1/cos(2 theta_h) - 1)/2 = t^2/(1 - t^2), G1 = 1 - t^2, and D cos dw = 2 t dt / (1 + t^2)^2:
+  //   E = Integral_0^1 2t (1 - t^2) / (1 + t^2)^2 dt = Integral_0^1 (1 - u)/(1 + u)^2 du = 1 - ln 2.
+  const MicrofacetAlbedo e = microfacet_albedo({NdfKind::ggx, 1.0}, 1.0);
+  CHECK(std::abs(e.e_corr - (1.0 - std::log(2.0))) < 1e-14);
+  CHECK(std::abs(e.e_sep - (1.0 - std::log(2.0))) < 1e-14);
 }
 
 TEST_CASE("microfacet_albedo: limits alpha -> 0 (E -> 1, 1 - E ~ alpha^2) and mu -> 0 (E_corr -> 1, derived)") {

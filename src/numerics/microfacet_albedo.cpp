@@ -102,7 +102,7 @@ void add_graded(std::vector<double>& k, double x0, double w, bool below, bool ab
 // Geometry. o = (s_o, 0, mu_o), i = (-s_i cos psi, -s_i sin psi, mu_i) (psi = 0: mirror plane).
 //   |i_xy + o_xy|^2 = (s_i - s_o)^2 + 4 s_i s_o sin^2(psi/2)          (no cancellation at the peak)
 //   tan^2(theta_h)  = |i_xy + o_xy|^2 / (mu_i + mu_o)^2
-//   1 + i.o         = 1 + mu_i mu_o - s_i s_o cos(psi),  cos(theta_d) = i.h = sqrt((1 + i.o)/2)
+//   cos(theta_d)    = i.h = |i + o| / 2 = sqrt(|i_xy + o_xy|^2 + (mu_i + mu_o)^2) / 2
 // with s_i - s_o = (mu_o - mu_i)(mu_o + mu_i) / (s_i + s_o).
 MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o) {
   check_ndf(ndf);
@@ -119,10 +119,12 @@ MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o) {
     const double sum_mu = mu_i + mu_o;
     const auto g = [&](double psi) -> std::array<double, 2> {
       const double sh = std::sin(0.5 * psi);
-      const double t2 = (ds * ds + 4.0 * s_i * s_o * sh * sh) / (sum_mu * sum_mu);
+      const double xy2 = ds * ds + 4.0 * s_i * s_o * sh * sh;  // |i_xy + o_xy|^2
+      const double t2 = xy2 / (sum_mu * sum_mu);
       const double d = ndf_d_tan2(ndf, t2);
-      const double one_plus_io = 1.0 + mu_i * mu_o - s_i * s_o * std::cos(psi);
-      const double m = 1.0 - std::sqrt(std::max(0.0, 0.5 * one_plus_io));
+      // cos(theta_d) = |i + o| / 2 from the same parts (1 + mu_i mu_o - s_i s_o cos(psi)
+      // cancels for grazing pairs: noise ~1e-16 / cos(theta_d)).
+      const double m = 1.0 - 0.5 * std::sqrt(xy2 + sum_mu * sum_mu);
       const double m2 = m * m;
       return {d, d * m2 * m2 * m};
     };
