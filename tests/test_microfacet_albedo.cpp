@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <vector>
 
 #include <boost/math/constants/constants.hpp>
 
@@ -89,6 +90,20 @@ TEST_CASE("microfacet_albedo: generalized Beckmann at p = 1 is Beckmann (differe
       check_close(g, b, 1e-12);
     }
   }
+}
+
+TEST_CASE("microfacet_albedo: the row evaluator's D (constants set up once) equals ndf_d_tan2 and the row equals single calls") {
+  for (MicrofacetNdf ndf : {MicrofacetNdf{NdfKind::ggx, 0.2}, MicrofacetNdf{NdfKind::beckmann, 0.7},
+                            MicrofacetNdf{NdfKind::gbeckmann, 0.3, 0.4}, MicrofacetNdf{NdfKind::gbeckmann, 1.5, 6.0}}) {
+    const NdfEvaluator ev(ndf);
+    for (double t2 : {0.0, 1e-6, 0.04, 1.0, 30.0, 1e8}) {
+      const double ref = ndf_d_tan2(ndf, t2);
+      CHECK(std::abs(ev.d_tan2(t2) - ref) <= 1e-14 * ref);
+    }
+  }
+  const MicrofacetNdf ndf{NdfKind::gbeckmann, 0.2, 2.0};
+  const std::vector<MicrofacetAlbedo> row = microfacet_albedo_row(ndf, {0.1, 0.9});
+  CHECK(row[1].e_corr == microfacet_albedo(ndf, 0.9).e_corr);
 }
 
 TEST_CASE("microfacet_albedo: Monte Carlo (fixed seed) agrees within 5 sigma") {

@@ -104,8 +104,8 @@ void add_graded(std::vector<double>& k, double x0, double w, bool below, bool ab
 //   tan^2(theta_h)  = |i_xy + o_xy|^2 / (mu_i + mu_o)^2
 //   cos(theta_d)    = i.h = |i + o| / 2 = sqrt(|i_xy + o_xy|^2 + (mu_i + mu_o)^2) / 2
 // with s_i - s_o = (mu_o - mu_i)(mu_o + mu_i) / (s_i + s_o).
-MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o) {
-  check_ndf(ndf);
+namespace {
+MicrofacetAlbedo albedo_impl(const MicrofacetNdf& ndf, const NdfEvaluator& dfun, double mu_o) {
   require_closed("mu", mu_o, kAlbedoMuMin, 1.0, "[1e-6, 1]");
   const double alpha = ndf.alpha;
   const double s_o = std::sqrt((1.0 - mu_o) * (1.0 + mu_o));
@@ -121,7 +121,7 @@ MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o) {
       const double sh = std::sin(0.5 * psi);
       const double xy2 = ds * ds + 4.0 * s_i * s_o * sh * sh;  // |i_xy + o_xy|^2
       const double t2 = xy2 / (sum_mu * sum_mu);
-      const double d = ndf_d_tan2(ndf, t2);
+      const double d = dfun.d_tan2(t2);
       // cos(theta_d) = |i + o| / 2 from the same parts (1 + mu_i mu_o - s_i s_o cos(psi)
       // cancels for grazing pairs: noise ~1e-16 / cos(theta_d)).
       const double m = 1.0 - 0.5 * std::sqrt(xy2 + sum_mu * sum_mu);
@@ -154,15 +154,29 @@ MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o) {
   const double corr = std::min(1.0, r[0]), sep = std::min(1.0, r[1]);
   return {corr, sep, std::max(0.0, corr - r[2]), r[2]};
 }
+}  // namespace
+
+MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o) {
+  const NdfEvaluator dfun(ndf);  // checks ndf
+  return albedo_impl(ndf, dfun, mu_o);
+}
+
+std::vector<MicrofacetAlbedo> microfacet_albedo_row(const MicrofacetNdf& ndf, const std::vector<double>& mus) {
+  const NdfEvaluator dfun(ndf);
+  std::vector<MicrofacetAlbedo> out;
+  out.reserve(mus.size());
+  for (double mu : mus) out.push_back(albedo_impl(ndf, dfun, mu));
+  return out;
+}
 
 MicrofacetAlbedoAvg microfacet_albedo_avg(const MicrofacetNdf& ndf) {
-  check_ndf(ndf);
+  const NdfEvaluator dfun(ndf);
   const auto f = [&](double mu) -> std::array<double, 2> {
     if (mu < kAlbedoMuMin) {
       // E(mu) bounded; the weight 2 mu makes [0, 1e-6] contribute < 1e-12.
       return {0.0, 0.0};
     }
-    const MicrofacetAlbedo e = microfacet_albedo(ndf, mu);
+    const MicrofacetAlbedo e = albedo_impl(ndf, dfun, mu);
     return {2.0 * mu * e.e_corr, 2.0 * mu * e.e_sep};
   };
   std::vector<double> k;

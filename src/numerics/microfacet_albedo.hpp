@@ -18,6 +18,8 @@
 // The independent check is microfacet_albedo_half_vector.hpp. Accuracy 1e-10 absolute
 // (measured: see tests/test_microfacet_albedo.cpp).
 // Domain: mu_o in [1e-6, 1], alpha in [1e-3, 10] (tables use [0.01, 1]).
+#include <vector>
+
 #include "numerics/microfacet_ndf.hpp"
 
 namespace brdftab::numerics {
@@ -32,6 +34,8 @@ struct MicrofacetAlbedo {
 inline constexpr double kAlbedoMuMin = 1e-6;
 
 MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o);
+// A row at one roughness: the NDF set up once (NdfEvaluator), then each mu.
+std::vector<MicrofacetAlbedo> microfacet_albedo_row(const MicrofacetNdf& ndf, const std::vector<double>& mus);
 
 // Hemispherical averages E_avg = 2 Integral_0^1 E(mu) mu dmu (correlated and separable).
 struct MicrofacetAlbedoAvg {

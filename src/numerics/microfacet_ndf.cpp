@@ -81,6 +81,33 @@ double ndf_d_tan2(const MicrofacetNdf& ndf, double t2) {
   return 0.0;
 }
 
+NdfEvaluator::NdfEvaluator(const MicrofacetNdf& ndf) : kind_(ndf.kind), a2_(ndf.alpha * ndf.alpha), norm_(0.0), p_(ndf.p) {
+  check_ndf(ndf);
+  switch (kind_) {
+    case NdfKind::ggx: norm_ = a2_ / kPi; break;
+    case NdfKind::beckmann: norm_ = 1.0 / (kPi * a2_); break;
+    // Eq. 39: p / (pi beta^2 Gamma(1/p)) = 1 / (pi beta^2 Gamma(1 + 1/p)).
+    case NdfKind::gbeckmann: norm_ = std::exp(-boost::math::lgamma(1.0 + 1.0 / p_)) / (kPi * a2_); break;
+  }
+}
+
+double NdfEvaluator::d_tan2(double t2) const {
+  if (std::isinf(t2)) return 0.0;
+  const double w = (1.0 + t2) * (1.0 + t2);
+  switch (kind_) {
+    case NdfKind::ggx: {
+      const double q = a2_ + t2;
+      return norm_ / (q * q) * w;
+    }
+    case NdfKind::beckmann: return norm_ * std::exp(-t2 / a2_) * w;
+    case NdfKind::gbeckmann: {
+      const double v = std::exp(-std::pow(t2 / a2_, p_));
+      return v == 0.0 ? 0.0 : norm_ * v * w;
+    }
+  }
+  return 0.0;
+}
+
 double ndf_lambda(const MicrofacetNdf& ndf, double mu) {
   if (mu <= 0.0) return std::numeric_limits<double>::infinity();
   if (mu >= 1.0) return 0.0;

@@ -31,6 +31,21 @@ std::string ndf_name(NdfKind kind);
 double ndf_d(const MicrofacetNdf& ndf, double cos_h);
 // D from t2 = tan^2(theta_h) >= 0 (no cancellation near the peak: callers form t2 directly).
 double ndf_d_tan2(const MicrofacetNdf& ndf, double t2);
+// D(tan^2) with the normalization constant set up once per roughness (the generalized
+// Beckmann's Gamma-function constant costs more than the rest of D): same values as
+// ndf_d_tan2 (tests/test_microfacet_albedo.cpp).
+class NdfEvaluator {
+ public:
+  explicit NdfEvaluator(const MicrofacetNdf& ndf);
+  double d_tan2(double t2) const;
+
+ private:
+  NdfKind kind_;
+  double a2_;    // alpha^2
+  double norm_;  // constant factor of D
+  double p_;
+};
+
 // Slope density in the scaled slope, P(rho) above (no alpha).
 double ndf_scaled_slope_density(const MicrofacetNdf& ndf, double rho);
 // Smith Lambda for a direction with cos(theta) = mu in [0, 1] (+inf at mu = 0).
