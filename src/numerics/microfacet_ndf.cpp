@@ -19,7 +19,7 @@ constexpr double kPi = boost::math::constants::pi<double>();
 
 void check_ndf(const MicrofacetNdf& ndf) {
   require_closed(ndf.kind == NdfKind::gbeckmann ? "beta" : "alpha", ndf.alpha, 1e-3, 10.0, "[1e-3, 10]");
-  if (ndf.kind == NdfKind::gbeckmann) require_closed("p", ndf.p, kGBeckmannPMin, kGBeckmannPMax, kGBeckmannPDomain);
+  if (ndf.kind == NdfKind::gbeckmann) require_closed("p", ndf.p, kSmithGBeckmannPMin, kSmithGBeckmannPMax, kSmithGBeckmannPDomain);
 }
 
 std::string ndf_name(NdfKind kind) {
@@ -36,7 +36,7 @@ double ndf_scaled_slope_density(const MicrofacetNdf& ndf, double rho) {
   switch (ndf.kind) {
     case NdfKind::ggx: return 1.0 / (kPi * (1.0 + r2) * (1.0 + r2));
     case NdfKind::beckmann: return std::exp(-r2) / kPi;
-    case NdfKind::gbeckmann: return gbeckmann_p22(r2, 1.0, ndf.p);  // Eq. 39, beta = 1
+    case NdfKind::gbeckmann: return smith_gbeckmann_p22(r2, 1.0, ndf.p);  // Eq. 39, beta = 1
   }
   return 0.0;
 }
@@ -55,7 +55,7 @@ double ndf_d(const MicrofacetNdf& ndf, double cos_h) {
     }
     case NdfKind::beckmann: return std::exp(-t2 / a2) / (kPi * a2 * c2 * c2);
     case NdfKind::gbeckmann: {
-      const double v = gbeckmann_p22(t2, ndf.alpha, ndf.p);
+      const double v = smith_gbeckmann_p22(t2, ndf.alpha, ndf.p);
       return v == 0.0 ? 0.0 : v / (c2 * c2);
     }
   }
@@ -74,7 +74,7 @@ double ndf_d_tan2(const MicrofacetNdf& ndf, double t2) {
     }
     case NdfKind::beckmann: return std::exp(-t2 / a2) / (kPi * a2) * w;
     case NdfKind::gbeckmann: {
-      const double v = gbeckmann_p22(t2, ndf.alpha, ndf.p);
+      const double v = smith_gbeckmann_p22(t2, ndf.alpha, ndf.p);
       return v == 0.0 ? 0.0 : v * w;
     }
   }
