@@ -172,10 +172,7 @@ std::vector<MicrofacetAlbedo> microfacet_albedo_row(const MicrofacetNdf& ndf, co
 MicrofacetAlbedoAvg microfacet_albedo_avg(const MicrofacetNdf& ndf) {
   const NdfEvaluator dfun(ndf);
   const auto f = [&](double mu) -> std::array<double, 2> {
-    if (mu < kAlbedoMuMin) {
-      // E(mu) bounded; the weight 2 mu makes [0, 1e-6] contribute < 1e-12.
-      return {0.0, 0.0};
-    }
+    if (mu < kAlbedoMuMin) return {0.0, 0.0};  // added below
     const MicrofacetAlbedo e = albedo_impl(ndf, dfun, mu);
     return {2.0 * mu * e.e_corr, 2.0 * mu * e.e_sep};
   };
@@ -183,7 +180,11 @@ MicrofacetAlbedoAvg microfacet_albedo_avg(const MicrofacetNdf& ndf) {
   add_graded(k, 0.0, ndf.alpha, false, true);
   k.push_back(kAlbedoMuMin);
   const std::array<double, 2> r = integrate_panels<2>(f, knots_in(k, 0.0, 1.0), 1e-11, 1.0);
-  return {r[0], r[1]};
+  // [0, mu_min]: 2 Integral E mu dmu = mu_min^2 E(mu_min) to O(mu_min^3) (E is smooth there
+  // and E_corr -> 1): 1e-12, which the tolerance above does not cover.
+  const MicrofacetAlbedo e0 = albedo_impl(ndf, dfun, kAlbedoMuMin);
+  const double w0 = kAlbedoMuMin * kAlbedoMuMin;
+  return {r[0] + w0 * e0.e_corr, r[1] + w0 * e0.e_sep};
 }
 
 }  // namespace brdftab::numerics
