@@ -50,9 +50,9 @@ double fresnel_avg_conductor(double n, double k) {
     if (!(b > a)) continue;
     if (mu0 > 0.0 && i == 0) {
       const auto g = [&](double v) { return f(a + (b - a) * v * v) * 2.0 * (b - a) * v; };
-      sum += GK::integrate(g, 0.0, 1.0, 12, 1e-14);
+      sum += GK::integrate(g, 0.0, 1.0, 12, 1e-12);
     } else {
-      sum += GK::integrate(f, a, b, 12, 1e-14);
+      sum += GK::integrate(f, a, b, 12, 1e-12);
     }
   }
   return sum;
