@@ -67,12 +67,12 @@ TEST_CASE("microfacet_albedo: incoming-direction quadrature vs half-vector quadr
 }
 
 // The half-vector method is slow (seconds per value; minutes with the generalized Beckmann's
-// quadrature Lambda): more cases, skipped by default (--no-skip). Measured 2026-12-01:
+// quadrature Lambda: ~20 min for the last case): skipped by default (--no-skip). Measured 2026-12-01:
 // all within 2.0e-15 (GGX 0.5/0.5, Beckmann 0.02/0.7, generalized Beckmann beta 0.3 p 0.5 at mu 0.4).
 TEST_CASE("microfacet_albedo: incoming vs half vector, slow cases" * doctest::skip()) {
   struct Case { MicrofacetNdf ndf; double mu; };
   for (const Case& c : {Case{{NdfKind::ggx, 0.5}, 0.5}, Case{{NdfKind::beckmann, 0.02}, 0.7},
-                        Case{{NdfKind::gbeckmann, 0.3, 0.5}, 0.4}, Case{{NdfKind::gbeckmann, 0.1, 3.0}, 0.2}}) {
+                        Case{{NdfKind::gbeckmann, 0.3, 0.5}, 0.4}}) {
     CAPTURE(ndf_name(c.ndf.kind));
     CAPTURE(c.ndf.alpha);
     CAPTURE(c.mu);
