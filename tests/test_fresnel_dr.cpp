@@ -97,7 +97,7 @@ TEST_CASE("fresnel_avg_conductor: two quadratures agree to 1e-14; k = 0 is F_dr;
       if (k == 0.0) CHECK(std::abs(a - fresnel_dr(n)) < 1e-14);
     }
   }
-  MESSAGE("max |GK in mu - tanh-sinh in theta| = " << worst);
+  MESSAGE("max |GK in mu - GK in theta| = " << worst);
   CHECK(1.0 - fresnel_avg_conductor(1.0, 1e4) < 1e-3);
   CHECK_THROWS_AS(fresnel_avg_conductor(0.0, 0.0), std::domain_error);
   CHECK_THROWS_AS(fresnel_dr(0.0), std::domain_error);

@@ -75,7 +75,7 @@ double fresnel_avg_conductor_theta(double n, double k) {
     tail = 0.5 * (1.0 + std::cos(2.0 * tc));  // Integral_tc^{pi/2} sin(2 theta) dtheta, F = 1
     // Square-root kink at tc: theta = tc (1 - v^2) makes the integrand smooth in v.
     const auto g = [&](double v) { return f(tc * (1.0 - v * v)) * 2.0 * tc * v; };
-    return tail + GK::integrate(g, 0.0, 1.0, 15, 1e-14);
+    return tail + GK::integrate(g, 0.0, 1.0, 15, 1e-12);
   } else {
     const double modulus = std::hypot(n, k);
     for (double m = 64.0; m >= 1.0 / 64; m /= 4.0) {
@@ -86,7 +86,7 @@ double fresnel_avg_conductor_theta(double n, double k) {
   std::sort(cuts.begin(), cuts.end());
   double sum = tail;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
-    if (cuts[i + 1] > cuts[i]) sum += GK::integrate(f, cuts[i], cuts[i + 1], 15, 1e-14);
+    if (cuts[i + 1] > cuts[i]) sum += GK::integrate(f, cuts[i], cuts[i + 1], 15, 1e-12);
   return sum;
 }
 
