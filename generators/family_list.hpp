@@ -12,4 +12,5 @@
   X(demo)                   \
   X(smith_gbeckmann)        \
   X(hfunc)                  \
-  X(ghs_sigma_rel)
+  X(ghs_sigma_rel)           \
+  X(ls)

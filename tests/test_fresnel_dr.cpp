@@ -43,7 +43,7 @@ TEST_CASE("fresnel_dr: 1 - F_dr(1/eta) = (1 - F_dr(eta)) / eta^2, by quadrature 
   CHECK(std::abs(fresnel_dr(1 / 1.5) - 0.596345759708) < 1e-12);
 }
 
-TEST_CASE("fresnel_dr: the fits approximate the internal reflectance F_dr(1/x); errors over their domains") {
+TEST_CASE("fresnel_dr: the fits approximate the internal reflectance F_dr(1/x), errors over their domains") {
   // Convention: at x = 1.5 every fit is near F_dr(1/1.5) = 0.596, far from F_dr(1.5) = 0.092.
   CHECK(std::abs(fresnel_dr_fit_deon_irving(1.5) - fresnel_dr(1 / 1.5)) < 0.01);
   CHECK(std::abs(fresnel_dr_fit_pbrt(1.5) - fresnel_dr(1 / 1.5)) < 0.01);
@@ -83,7 +83,7 @@ TEST_CASE("fresnel_dr: the fits approximate the internal reflectance F_dr(1/x); 
   CHECK(wide.di > 0.2);
 }
 
-TEST_CASE("fresnel_avg_conductor: two quadratures agree to 1e-14; k = 0 is F_dr; limits") {
+TEST_CASE("fresnel_avg_conductor: two quadratures agree to 1e-14, k = 0 is F_dr, limits") {
   double worst = 0.0;
   for (double n : {0.05, 0.2, 0.47, 1.0, 1.5, 3.0, 20.0}) {
     for (double k : {0.0, 0.01, 0.5, 2.4, 6.6, 30.0, 1e3}) {

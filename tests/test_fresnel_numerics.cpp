@@ -96,7 +96,7 @@ TEST_CASE("fresnel: eta -> 1 keeps full relative accuracy (leading-order asympto
   }
 }
 
-TEST_CASE("fresnel: conductor complex form vs the classical real form to 1e-14; k = 0 is the dielectric") {
+TEST_CASE("fresnel: conductor complex form vs the classical real form to 1e-14, k = 0 is the dielectric") {
   double worst = 0.0, worst_k0 = 0.0;
   for (double n : {0.05, 0.2, 0.5, 1.0, 1.5, 3.0, 10.0, 1e3}) {
     for (double k : {0.0, 1e-6, 0.1, 1.0, 3.0, 10.0, 1e3, 1e6}) {

@@ -27,7 +27,7 @@ double brute_max_rel(double f0, double n, double k) {
 }
 }  // namespace
 
-TEST_CASE("fresnel_schlick: exact at normal incidence and grazing; the error scan finds the brute-force maximum") {
+TEST_CASE("fresnel_schlick: exact at normal incidence and grazing, the error scan finds the brute-force maximum") {
   CHECK(fresnel_schlick(0.04, 1.0) == 0.04);
   CHECK(fresnel_schlick(0.04, 0.0) == 1.0);
   for (double eta : {1.33, 1.5, 2.4}) {

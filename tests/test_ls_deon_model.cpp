@@ -12,6 +12,7 @@
 
 #include "numerics/hfunction_graded_gauss.hpp"
 #include "numerics/ls_deon_model.hpp"
+#include "numerics/ls_half_space.hpp"
 #include "numerics/ls_three_term.hpp"
 
 using namespace brdftab::numerics;
@@ -36,7 +37,7 @@ const double kMus[] = {0.01, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 
 // The BRDF the paper's model approximates: exact LS single scattering (Eq. 17) plus the exact
 // three-term multiple scattering, all three modes.
 double exact_hybrid(const LsThreeTermBrdf& ex, double mi, double mo, double phi) {
-  return ls_single_scattering(ex.c(), mi, mo, phi) + ex.multiple_mode(0, mi, mo) +
+  return ls_f_single(ex.c(), mi, mo, phi) + ex.multiple_mode(0, mi, mo) +
          ex.multiple_mode(1, mi, mo) * std::cos(phi) + ex.multiple_mode(2, mi, mo) * std::cos(2 * phi);
 }
 }  // namespace
@@ -186,8 +187,8 @@ TEST_CASE("ls deon: albedo mappings Eq. 46-47: values, mutual inverse, exact thr
 TEST_CASE("ls deon: phi convention: phi = 0 is back-scattering (Eq. 9, 17, 33 and Eq. 48)") {
   // Eq. 17 evaluates p at -(omega_i . omega_o): with mu_i = mu_o and phi = 0 that is p(-1), the
   // maximum of the backward-peaked LS phase function.
-  CHECK(ls_single_scattering(1.0, 0.4, 0.4, 0.0) > ls_single_scattering(1.0, 0.4, 0.4, pi));
-  CHECK(ls_single_scattering(1.0, 0.4, 0.4, 0.0) == doctest::Approx(2.0 / (3 * pi) / 0.8).epsilon(1e-12));
+  CHECK(ls_f_single(1.0, 0.4, 0.4, 0.0) > ls_f_single(1.0, 0.4, 0.4, pi));
+  CHECK(ls_f_single(1.0, 0.4, 0.4, 0.0) == doctest::Approx(2.0 / (3 * pi) / 0.8).epsilon(1e-12));
   // multiple scattering leans forward (f_m^(1) < 0), which is what Eq. 48's (c - 0.25)|phi| term
   // models for c > 1/4; reading Eq. 48 with phi -> pi - phi doubles its median error.
   const LsThreeTermBrdf ex(0.9);
@@ -198,8 +199,8 @@ TEST_CASE("ls deon: phi convention: phi = 0 is back-scattering (Eq. 9, 17, 33 an
       for (int k = 0; k <= 12; ++k) {
         const double phi = pi * k / 12, x = exact_hybrid(ex, mi, mo, phi);
         same.add(std::abs(deon_fast_brdf(0.9, mi, mo, phi) / x - 1));
-        const double f_flip = deon_fast_brdf(0.9, mi, mo, pi - phi) - ls_single_scattering(0.9, mi, mo, pi - phi) +
-                              ls_single_scattering(0.9, mi, mo, phi);
+        const double f_flip = deon_fast_brdf(0.9, mi, mo, pi - phi) - ls_f_single(0.9, mi, mo, pi - phi) +
+                              ls_f_single(0.9, mi, mo, phi);
         flipped.add(std::abs(f_flip / x - 1));
       }
   CHECK(same.median() < 0.6 * flipped.median());
@@ -235,7 +236,7 @@ TEST_CASE("ls deon: stress: extreme arguments give finite, reciprocal values, gr
           CHECK(deon_brdf(c, mi, mo, phi, LsDeonVariant::corrected) ==
                 doctest::Approx(deon_brdf(c, mo, mi, phi, LsDeonVariant::corrected)).epsilon(1e-15));
           CHECK(ex.brdf(mi, mo, phi) == doctest::Approx(ex.brdf(mo, mi, phi)).epsilon(1e-14));
-          CHECK(ls_single_scattering(c, mi, mo, phi) >= 0.0);
+          CHECK(ls_f_single(c, mi, mo, phi) >= 0.0);
           CHECK(deon_fast_brdf(c, mi, mo, phi) >= 0.0);
         }
   }

@@ -32,7 +32,6 @@ std::filesystem::path default_tables_dir() {
 int run_main(int argc, char** argv) {
   CLI::App app{"brdftab: exact numerics and HDF5 lookup tables for BRDF models"};
   app.require_subcommand(1);
-  app.fallthrough();  // global options (--allow-foreign) may follow the subcommand
   app.set_version_flag("--version", std::string("brdftab ") + kVersion);
 
   GenerateOptions gen;
@@ -72,8 +71,9 @@ int run_main(int argc, char** argv) {
   i->add_flag("--markdown", info_markdown, "one Markdown table row per dataset (accepts several files)");
 
   bool allow_foreign = false, force = false;
-  app.add_flag("--allow-foreign", allow_foreign,
-               "read table files without a brdftab digest (each is validated in a child process first)");
+  for (CLI::App* sub : {static_cast<CLI::App*>(&app), e, v, b, i})
+    sub->add_flag("--allow-foreign", allow_foreign,
+                  "read table files without a brdftab digest (each is validated in a child process first)");
   g->add_flag("--force", force, "generate tables above the pre-flight size limit (4M values)");
   try {
     app.parse(argc, argv);

@@ -176,7 +176,7 @@ constexpr AttributeRule kDatasetRules[] = {
     {"error_sampling", Kind::text, 0, 0, false},
     {"generation_seconds", Kind::number, 0, kMaxFinite, false},
     // smith_gbeckmann
-    {"a_scale", Kind::text, 0, 0, false},
+    {"b_definition", Kind::text, 0, 0, false},
     {"lookup", Kind::text, 0, 0, false},
     {"source", Kind::text, 0, 0, false},
     // ghs_sigma_rel: K = w_scale * B must be positive and finite (derived axis w(B, s)).

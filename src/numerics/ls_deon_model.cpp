@@ -1,5 +1,7 @@
 #include "numerics/ls_deon_model.hpp"
 
+#include "numerics/ls_half_space.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -42,14 +44,6 @@ LsThreeTermConstants deon_constants_fit(double c) {
   return k;
 }
 
-double ls_single_scattering(double c, double mu_i, double mu_o, double phi) {
-  check(c, mu_i, mu_o);
-  if (!std::isfinite(phi)) throw_domain_error("phi", phi, "finite");
-  // Eq. 9 with omega_i, omega_o both outgoing; Eq. 17 evaluates p at the negative cosine.
-  const double u = std::clamp(-(mu_i * mu_o + sin_product(mu_i, mu_o) * std::cos(phi)), -1.0, 1.0);
-  return c * ls_phase(u) / (mu_i + mu_o);
-}
-
 double deon_multiple_mode(int m, double c, double mu_i, double mu_o, LsDeonVariant variant) {
   check(c, mu_i, mu_o);
   const bool fixed = variant == LsDeonVariant::corrected;
@@ -82,12 +76,12 @@ double deon_multiple_mode(int m, double c, double mu_i, double mu_o, LsDeonVaria
 
 double deon_brdf(double c, double mu_i, double mu_o, double phi, LsDeonVariant variant) {
   // Eq. 18
-  return ls_single_scattering(c, mu_i, mu_o, phi) + deon_multiple_mode(0, c, mu_i, mu_o, variant) +
+  return ls_f_single(c, mu_i, mu_o, phi) + deon_multiple_mode(0, c, mu_i, mu_o, variant) +
          deon_multiple_mode(1, c, mu_i, mu_o, variant) * std::cos(phi);
 }
 
 double deon_fast_brdf(double c, double mu_i, double mu_o, double phi) {
-  const double f1 = ls_single_scattering(c, mu_i, mu_o, phi);
+  const double f1 = ls_f_single(c, mu_i, mu_o, phi);
   const double kd = deon_kd_from_c(c);
   const double S = sin_product(mu_i, mu_o);
   // acos(S)/S -> +inf as S -> 0 (normal incidence or exit): the last term vanishes there

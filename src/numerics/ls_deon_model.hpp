@@ -16,9 +16,8 @@ enum class LsDeonVariant {
 // A and E are the exact Eq. 38. c in [0, 1].
 LsThreeTermConstants deon_constants_fit(double c);
 
-// Single scattering with the exact LS phase function, Eq. 17: c p(-omega_i . omega_o)/(mu_i + mu_o),
-// -omega_i . omega_o = -(mu_i mu_o + S cos phi) (Eq. 9). c in [0, 1], mu in (0, 1], phi finite.
-double ls_single_scattering(double c, double mu_i, double mu_o, double phi);
+// Single scattering with the exact LS phase function (Eq. 17): numerics::ls_f_single
+// (ls_half_space.hpp).
 
 // Multiple-scattering Fourier modes of the model, m = 0 (Eq. 36-37, 44-45) and m = 1
 // (Eq. 27-35); the model sets f_m^(2) = 0 (Sec. 3.2).

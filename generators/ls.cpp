@@ -1,0 +1,147 @@
+// Table family ls: the albedo maps of the Lambertian-sphere half space with the true LS
+// phase function (d'Eon Eq. 1; issue 9): k_d(c) 1-D and A(c, mu) 2-D. Exact values:
+// numerics::LsAlbedo (discrete ordinates, m = 0 mode, Legendre order 64; its k_d agrees
+// with the flux identity and the isotropic H-function identities to ~1e-12, tests/test_ls_*).
+// One solve per c (~0.5 s): the A rows reuse it for every mu; k_d costs one solve per point.
+// c(k_d) is not tabulated: it is the inverse of the monotone k_d table (lookup/ls.hpp).
+#include "generators/ls.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+#include "generators/manifest.hpp"
+#include "lookup/ls_schema.hpp"
+#include "lookup/number_format.hpp"
+#include "numerics/ls_albedo.hpp"
+
+namespace brdftab::gen::ls {
+
+namespace sc = schema::ls;
+
+Config read_config(const nlohmann::json& entry) {
+  EntryReader r(entry, "tables.ls");
+  Config c;
+  std::tie(c.c_lo, c.c_hi) = r.range("c_range", {c.c_lo, c.c_hi}, 0.0, 1.0);
+  std::tie(c.mu_lo, c.mu_hi) = r.range("mu_range", {c.mu_lo, c.mu_hi}, 0.0, 1.0);
+  c.kd_c_step = r.number("kd_c_step", c.kd_c_step, 1e-3, 0.5);
+  c.albedo_c_step = r.number("albedo_c_step", c.albedo_c_step, 1e-3, 0.5);
+  c.albedo_mu_step = r.number("albedo_mu_step", c.albedo_mu_step, 1e-3, 0.5);
+  c.kd = r.boolean("kd", true);
+  c.albedo = r.boolean("albedo", true);
+  r.finish();
+  if (!c.kd && !c.albedo) throw ManifestError("tables.ls: kd and albedo are both false: nothing to generate");
+  return c;
+}
+
+nlohmann::json to_json(const Config& c) {
+  return {{"c_range", {c.c_lo, c.c_hi}},      {"mu_range", {c.mu_lo, c.mu_hi}}, {"kd_c_step", c.kd_c_step},
+          {"albedo_c_step", c.albedo_c_step}, {"albedo_mu_step", c.albedo_mu_step}, {"kd", c.kd},
+          {"albedo", c.albedo}};
+}
+
+namespace {
+
+constexpr const char* kMethod =
+    "discrete ordinates on a graded double-Gauss rule, eigen-solution of the m = 0 mode with the diffusion "
+    "mode factored at c -> 1 (numerics/ls_dom_eigen), Legendre order 64; A = exact single scattering + "
+    "multiple part by the flux identity; k_d = 2 int A mu dmu";
+constexpr const char* kSource =
+    "d'Eon, An analytic BRDF for materials with spherical Lambertian scatterers, Eq. 1-4 and Sec. 3.5";
+
+std::string range_text(double lo, double hi) {
+  return "[" + lookup::format_number(lo) + ", " + lookup::format_number(hi) + "]";
+}
+
+}  // namespace
+
+std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
+  std::vector<BuiltTable> tables;
+  const double c_span = transformed_span(sc::kC.transform, c.c_lo, c.c_hi);
+  if (c.kd) {
+    TableSpec spec;
+    spec.dataset = std::string(sc::kKd.name);
+    spec.quantity = std::string(sc::kKd.quantity);
+    spec.axes = {axis_spec(sc::kC, c.c_lo, c.c_hi, points_for_step(c_span, c.kd_c_step))};
+    spec.interpolation = lookup::Interpolation::cubic;
+    spec.domain = "c in " + range_text(c.c_lo, c.c_hi);
+    spec.method = kMethod;
+    spec.generator = "ls";
+    spec.error_rows = 1;
+    spec.error_per_row = c.kd_error_points;
+    spec.rel_floor = 1e-3;
+    // A 1-D table is a single row, so build_table cannot spread it over threads: the row
+    // spreads its independent solves itself (one per c).
+    const RowFunction row = [](std::span<const double>, std::span<const double> cs, std::span<double> out) {
+      std::atomic<std::size_t> next{0};
+      std::exception_ptr error;
+      std::mutex error_mutex;
+      const auto work = [&] {
+        for (std::size_t j; (j = next++) < cs.size();) try {
+            out[j] = numerics::LsAlbedo(cs[j]).spherical();
+          } catch (...) {
+            std::lock_guard lock(error_mutex);
+            if (!error) error = std::current_exception();
+          }
+      };
+      std::vector<std::thread> threads(std::max(1, omp_get_max_threads()) - 1);
+      for (auto& t : threads) t = std::thread(work);
+      work();
+      for (auto& t : threads) t.join();
+      if (error) std::rethrow_exception(error);
+    };
+    BuiltTable t = build_table(spec, row, ctx);
+    t.dataset.attributes["source"] = kSource;
+    tables.push_back(std::move(t));
+  }
+  if (c.albedo) {
+    TableSpec spec;
+    spec.dataset = std::string(sc::kAlbedo.name);
+    spec.quantity = std::string(sc::kAlbedo.quantity);
+    spec.axes = {axis_spec(sc::kC, c.c_lo, c.c_hi, points_for_step(c_span, c.albedo_c_step)),
+                 axis_spec(sc::kMu, c.mu_lo, c.mu_hi,
+                           points_for_step(transformed_span(sc::kMu.transform, c.mu_lo, c.mu_hi), c.albedo_mu_step))};
+    spec.interpolation = lookup::Interpolation::cubic;
+    spec.domain = "c in " + range_text(c.c_lo, c.c_hi) + ", mu in " + range_text(c.mu_lo, c.mu_hi);
+    spec.method = kMethod;
+    spec.generator = "ls";
+    spec.error_rows = c.albedo_error_rows;
+    spec.error_per_row = c.albedo_error_per_row;
+    spec.rel_floor = 1e-3;
+    // One solve per c row, then every mu.
+    const RowFunction row = [](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
+      const numerics::LsAlbedo a(outer[0]);
+      for (std::size_t j = 0; j < mus.size(); ++j) out[j] = mus[j] == 0 ? a.plane(1e-300) : a.plane(mus[j]);
+    };
+    BuiltTable t = build_table(spec, row, ctx);
+    t.dataset.attributes["source"] = kSource;
+    tables.push_back(std::move(t));
+  }
+  return tables;
+}
+
+Config test_config() {
+  Config c;
+  c.c_lo = 0.5;
+  c.kd_c_step = 1.0 / 8;  // sqrt(1-c) in [0, 0.707]: 7 points
+  c.albedo = false;
+  c.kd_error_points = 6;
+  return c;
+}
+
+Config narrowed(Config c) {
+  c.c_lo = 0.5 * (c.c_lo + c.c_hi);
+  c.mu_hi = 0.5 * (c.mu_lo + c.mu_hi);
+  return c;
+}
+
+BRDFTAB_DEFINE_FAMILY(ls)
+
+}  // namespace brdftab::gen::ls

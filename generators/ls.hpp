@@ -1,0 +1,31 @@
+#pragma once
+// Table family ls: albedo maps of the Lambertian-sphere medium (see ls.cpp; schema in
+// lookup/ls_schema.hpp).
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "generators/family.hpp"
+
+namespace brdftab::gen::ls {
+
+inline constexpr const char* kSummary =
+    "Lambertian-sphere albedo maps: k_d(c) and plane albedo A(c, mu), true phase function (d'Eon Sec. 2-3)";
+
+// Resolution as steps in the transformed coordinates (sqrt(1-c), mu^(1/4)).
+struct Config {
+  double c_lo = 0, c_hi = 1, mu_lo = 0, mu_hi = 1;
+  double kd_c_step = 1.0 / 64;                                 // 65 points over [0, 1]
+  double albedo_c_step = 1.0 / 40, albedo_mu_step = 1.0 / 40;  // 41 x 41
+  bool kd = true, albedo = true;
+  int kd_error_points = 32;  // each is one solve (~0.5 s)
+  int albedo_error_rows = 16, albedo_error_per_row = 48;
+};
+
+Config read_config(const nlohmann::json& entry);
+nlohmann::json to_json(const Config& c);
+std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx);
+Config test_config();
+Config narrowed(Config c);
+
+}  // namespace brdftab::gen::ls
