@@ -13,4 +13,5 @@
   X(smith_gbeckmann)        \
   X(hfunc)                  \
   X(ghs_sigma_rel)           \
-  X(ls)
+  X(ls)                     \
+  X(fresnel)
