@@ -36,7 +36,7 @@ Config read_config(const nlohmann::json& entry) {
   std::tie(c.k_lo, c.k_hi) = r.range("k_range", {c.k_lo, c.k_hi}, 0.0, 1e4);
   c.dr_eta_step = r.number("dr_eta_step", c.dr_eta_step, 1e-4, 1.0);
   c.avg_n_step = r.number("avg_n_step", c.avg_n_step, 1e-4, 1.0);
-  c.avg_k_step = r.number("avg_k_step", c.avg_k_step, 1e-4, 0.5);
+  c.avg_k_step = r.number("avg_k_step", c.avg_k_step, 1e-4, 1.0);
   c.dr = r.boolean("dr", true);
   c.avg_conductor = r.boolean("avg_conductor", true);
   r.finish();
@@ -109,8 +109,7 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
         axis_spec(sc::kN, c.n_lo, c.n_hi,
                   points_for_step(transformed_span(sc::kN.transform, c.n_lo, c.n_hi), c.avg_n_step)),
         axis_spec(sc::kK, c.k_lo, c.k_hi,
-                  points_for_step(transformed_span(sc::kK.transform, c.k_lo, c.k_hi, sc::kKScale), c.avg_k_step),
-                  sc::kKScale)};
+                  points_for_step(transformed_span(sc::kK.transform, c.k_lo, c.k_hi), c.avg_k_step))};
     spec.interpolation = lookup::Interpolation::cubic;
     spec.domain = "n in " + range_text(c.n_lo, c.n_hi) + ", k in " + range_text(c.k_lo, c.k_hi);
     spec.method =
@@ -135,7 +134,7 @@ Config test_config() {
   c.dr_eta_step = 1.0 / 4;
   c.dr_error_points = 16;
   c.n_lo = 0.5, c.n_hi = 2, c.k_hi = 4;
-  c.avg_n_step = 1.0 / 8, c.avg_k_step = 1.0 / 16;
+  c.avg_n_step = 1.0 / 8, c.avg_k_step = 1.0 / 8;
   c.avg_error_rows = 16, c.avg_error_per_row = 16;
   return c;
 }
