@@ -3,9 +3,11 @@
 // exists, has the same grid, and differs from the fresh one by no more than the error it
 // states (max_abs_error, measured off-grid by the generator).
 #include <doctest/doctest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 #include "generators/family.hpp"
 #include "generators/manifest.hpp"
@@ -16,7 +18,7 @@ using namespace brdftab;
 
 TEST_CASE("committed default tables match a fresh generation within their stated error") {
   const fs::path committed = fs::path(BRDFTAB_SOURCE_DIR) / "tables";
-  const fs::path fresh = fs::path(BRDFTAB_TEST_TMP) / "fresh_tables";
+  const fs::path fresh = fs::path(BRDFTAB_TEST_TMP) / ("fresh_tables_" + std::to_string(::getpid()));
   fs::remove_all(fresh);
   fs::create_directories(fresh);
   gen::GenerateContext ctx;

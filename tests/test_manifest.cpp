@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
+#include <string>
 
 #include "generators/family.hpp"
 #include "generators/manifest.hpp"
@@ -70,7 +71,7 @@ TEST_CASE("EntryReader range checks: domain, order, shape") {
 }
 
 TEST_CASE("a narrower range in a manifest gives a smaller table at the same error") {
-  const std::filesystem::path dir = std::filesystem::path(BRDFTAB_TEST_TMP) / "narrow";
+  const std::filesystem::path dir = std::filesystem::path(BRDFTAB_TEST_TMP) / ("narrow_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   GenerateContext ctx;
   ctx.out_dir = dir;

@@ -4,9 +4,11 @@
 // manifest handling.
 #include <numbers>
 #include <doctest/doctest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
+#include <string>
 #include <limits>
 #include <random>
 
@@ -83,7 +85,7 @@ TEST_CASE("smith_gbeckmann manifest: unknown keys and out-of-domain ranges are r
 }
 
 TEST_CASE("smith_gbeckmann manifest: a narrower p range gives a smaller table at the same error") {
-  const fs::path dir = fs::path(BRDFTAB_TEST_TMP) / "smith_gbeckmann_narrow";
+  const fs::path dir = fs::path(BRDFTAB_TEST_TMP) / ("smith_gbeckmann_narrow_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   gen::GenerateContext ctx;
