@@ -79,24 +79,7 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
     spec.error_rows = 1;
     spec.error_per_row = c.dr_error_points;
     // A 1-D table is one row: spread its independent values over threads here.
-    const RowFunction row = [](std::span<const double>, std::span<const double> etas, std::span<double> out) {
-      std::atomic<std::size_t> next{0};
-      std::exception_ptr error;
-      std::mutex error_mutex;
-      const auto work = [&] {
-        for (std::size_t j; (j = next++) < etas.size();) try {
-            out[j] = numerics::fresnel_dr(etas[j]);
-          } catch (...) {
-            std::lock_guard lock(error_mutex);
-            if (!error) error = std::current_exception();
-          }
-      };
-      std::vector<std::thread> threads(std::max(1, omp_get_max_threads()) - 1);
-      for (auto& t : threads) t = std::thread(work);
-      work();
-      for (auto& t : threads) t.join();
-      if (error) std::rethrow_exception(error);
-    };
+    const RowFunction row = pointwise_parallel_row([](double eta) { return numerics::fresnel_dr(eta); });
     BuiltTable t = build_table(spec, row, ctx);
     t.dataset.attributes["source"] = kSource;
     tables.push_back(std::move(t));

@@ -79,24 +79,7 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
     spec.rel_floor = 1e-3;
     // A 1-D table is a single row, so build_table cannot spread it over threads: the row
     // spreads its independent solves itself (one per c).
-    const RowFunction row = [](std::span<const double>, std::span<const double> cs, std::span<double> out) {
-      std::atomic<std::size_t> next{0};
-      std::exception_ptr error;
-      std::mutex error_mutex;
-      const auto work = [&] {
-        for (std::size_t j; (j = next++) < cs.size();) try {
-            out[j] = numerics::LsAlbedo(cs[j]).spherical();
-          } catch (...) {
-            std::lock_guard lock(error_mutex);
-            if (!error) error = std::current_exception();
-          }
-      };
-      std::vector<std::thread> threads(std::max(1, omp_get_max_threads()) - 1);
-      for (auto& t : threads) t = std::thread(work);
-      work();
-      for (auto& t : threads) t.join();
-      if (error) std::rethrow_exception(error);
-    };
+    const RowFunction row = pointwise_parallel_row([](double c) { return numerics::LsAlbedo(c).spherical(); });
     BuiltTable t = build_table(spec, row, ctx);
     t.dataset.attributes["source"] = kSource;
     tables.push_back(std::move(t));

@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <mutex>
 #include <random>
 #include <sstream>
+#include <thread>
 
 #include "generators/preflight.hpp"
 #include "numerics/domain_check.hpp"
@@ -184,6 +186,27 @@ std::vector<TableSummary> write_built_tables(const std::string& file, std::vecto
   }
   tablewrite::write_table_file(ctx.out_dir / file, datasets, {{"generator", generator}});
   return summaries;
+}
+
+RowFunction pointwise_parallel_row(std::function<double(double)> f) {
+  return [f = std::move(f)](std::span<const double>, std::span<const double> xs, std::span<double> out) {
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr error;
+    std::mutex error_mutex;
+    const auto work = [&] {
+      for (std::size_t j; (j = next++) < xs.size();) try {
+          out[j] = f(xs[j]);
+        } catch (...) {
+          std::lock_guard lock(error_mutex);
+          if (!error) error = std::current_exception();
+        }
+    };
+    std::vector<std::thread> threads(static_cast<std::size_t>(std::max(1, omp_get_max_threads()) - 1));
+    for (auto& t : threads) t = std::thread(work);
+    work();
+    for (auto& t : threads) t.join();
+    if (error) std::rethrow_exception(error);
+  };
 }
 
 }  // namespace brdftab::gen

@@ -47,6 +47,11 @@ inline double transformed_span(lookup::Transform t, double lo, double hi, double
 using RowFunction =
     std::function<void(std::span<const double> outer, std::span<const double> last_values, std::span<double> out)>;
 
+// A row of independent, costly values (typically a 1-D table, whose single row build_table
+// cannot spread over threads): out[j] = f(last_values[j]), the values spread over the
+// OpenMP thread count; the first exception is rethrown. f must be thread-safe.
+RowFunction pointwise_parallel_row(std::function<double(double)> f);
+
 struct TableSpec {
   std::string dataset;   // HDF5 dataset name, e.g. "H_iso"
   std::string quantity;  // e.g. "H_iso(c, mu)"
