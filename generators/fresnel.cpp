@@ -58,10 +58,6 @@ constexpr const char* kSource =
     "Holzschuch & Pacanowski, A two-scale microfacet reflectance model combining reflection and diffraction, "
     "Sec. 3.2.1 (Fresnel, Eq. 11-13); Kulla & Conty 2017 (F_avg)";
 
-std::string range_text(double lo, double hi) {
-  return "[" + lookup::format_number(lo) + ", " + lookup::format_number(hi) + "]";
-}
-
 }  // namespace
 
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {

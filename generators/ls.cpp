@@ -56,10 +56,6 @@ constexpr const char* kMethod =
 constexpr const char* kSource =
     "d'Eon, An analytic BRDF for materials with spherical Lambertian scatterers, Eq. 1-4 and Sec. 3.5";
 
-std::string range_text(double lo, double hi) {
-  return "[" + lookup::format_number(lo) + ", " + lookup::format_number(hi) + "]";
-}
-
 }  // namespace
 
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {

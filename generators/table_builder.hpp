@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "generators/generate_context.hpp"
+#include "lookup/number_format.hpp"
 #include "lookup/schema.hpp"
 #include "lookup/table.hpp"
 #include "tablewrite/table_writer.hpp"
@@ -27,6 +28,10 @@ struct AxisSpec {
   double scale = 1.0;  // k for x/(k+x)
   std::string units;
 };
+// "[lo, hi]" with shortest round-trip numbers, for TableSpec::domain texts.
+inline std::string range_text(double lo, double hi) {
+  return "[" + lookup::format_number(lo) + ", " + lookup::format_number(hi) + "]";
+}
 // An axis of the family schema (name, transform, units) over [lo, hi] with n points.
 inline AxisSpec axis_spec(const schema::AxisSchema& a, double lo, double hi, int n, double scale = 1.0) {
   return {std::string(a.name), a.transform, lo, hi, n, scale, std::string(a.units)};
