@@ -42,6 +42,16 @@ struct MicrofacetAlbedoAvg {
   double eavg_corr;
   double eavg_sep;
 };
+// Composite Gauss-Legendre in mu on panels graded geometrically (ratio 4) from alpha/64 down
+// to mu_min = 1e-6 and up to 1 (microfacet_albedo.cpp says why); 1e-10 absolute (checked
+// against an adaptive Gauss-Kronrod over mu in tests/test_microfacet_energy.cpp).
 MicrofacetAlbedoAvg microfacet_albedo_avg(const MicrofacetNdf& ndf);
+// The same in parts, for callers that evaluate E on the nodes themselves (a table
+// generator sharing rows): the nodes for a roughness alpha (and their weights), then the
+// average from E at those nodes and at mu_min.
+inline constexpr int kAvgOrder = 20;
+std::vector<double> microfacet_albedo_avg_nodes(double alpha, std::vector<double>* weights = nullptr);
+MicrofacetAlbedoAvg microfacet_albedo_avg_from_nodes(const std::vector<double>& mus, const std::vector<double>& weights,
+                                                     const std::vector<MicrofacetAlbedo>& e, const MicrofacetAlbedo& e_min);
 
 }  // namespace brdftab::numerics

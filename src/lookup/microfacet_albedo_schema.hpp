@@ -1,0 +1,132 @@
+#pragma once
+// Schema of the microfacet_albedo family (tables/microfacet_albedo.h5); exact numerics in
+// numerics/microfacet_albedo.hpp (directional albedo E(mu) with F = 1 of a microfacet BRDF,
+// its split-sum pair and the hemispherical average E_avg) and
+// numerics/microfacet_energy_compensation.hpp (Kulla & Conty 2017).
+//
+// Datasets, per quantity q of {E_corr, E_sep, split_scale, split_bias}:
+//   microfacet_albedo_<ndf>_<q>_{compact,precise}  ndf in {ggx, beckmann}: on (alpha, mu)
+//   microfacet_albedo_gbeckmann_<q>_compact        generalized Beckmann: on (p, beta, mu)
+//   microfacet_albedo_gbeckmann_material_p<p>_<q>  the same at one kurtosis p: on (beta, mu)
+// and per average qa of {Eavg_corr, Eavg_sep}:
+//   microfacet_albedo_avg_<ndf>_<qa>               on alpha;  _avg_gbeckmann_<qa> on (p, beta).
+// compact: float32 (<= 32 KB per quantity); precise: float64. All cubic.
+//
+// Axis transforms (why):
+//   mu     log. E(mu) is analytic for mu > 0 but not at mu = 0: Lambda_o ~ alpha / mu makes
+//          E_corr -> 1 with a deficit ~ (mu / alpha) times logarithms (E_sep -> 0 likewise), so
+//          every roughness has its grazing transition at mu ~ alpha, a fixed width in ln(mu)
+//          that moves by ln(alpha): on ln(mu) the transition has the same shape for every
+//          alpha and below it E approaches its limit like exp(ln mu). The range starts at the
+//          exact numerics' mu_min = 1e-6 (below it E differs from E(1e-6) by < 1e-5 / alpha).
+//   alpha  log (and beta): the peak width scales with alpha; E changes on a fixed scale in
+//          ln(alpha) (1 - E ~ alpha^2 for GGX, exp(-1/alpha^2)-small for Beckmann at normal
+//          incidence), so a regular ln(alpha) grid spends its points where E changes.
+//   p      log: the generalized Beckmann shape (Holzschuch & Pacanowski Eq. 39) changes as a
+//          ratio of p (p and 1/p are symmetric about the Beckmann p = 1 in kurtosis order).
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "lookup/number_format.hpp"
+#include "lookup/schema.hpp"
+
+namespace brdftab::schema::microfacet_albedo {
+
+inline constexpr std::string_view kFile = "microfacet_albedo.h5";
+
+inline constexpr AxisSchema kMu{"mu", lookup::Transform::log, "1"};
+inline constexpr AxisSchema kAlpha{"alpha", lookup::Transform::log, "1"};
+inline constexpr AxisSchema kBeta{"beta", lookup::Transform::log, "1"};
+inline constexpr AxisSchema kP{"p", lookup::Transform::log, "1"};
+
+// The four directional quantities in the order of numerics::MicrofacetAlbedo, and the two averages.
+inline constexpr std::array<std::string_view, 4> kQuantities{"E_corr", "E_sep", "split_scale", "split_bias"};
+inline constexpr std::array<std::string_view, 2> kAvgQuantities{"Eavg_corr", "Eavg_sep"};
+
+#define BRDFTAB_MFA_2D(NDF, Q, V, TEXT)                                                                     \
+  DatasetSchema {                                                                                          \
+    "microfacet_albedo_" NDF "_" Q "_" V, false, TEXT " of the " NDF " microfacet BRDF (F = 1), on (alpha, mu)", 2, \
+    { kAlpha, kMu }                                                                                        \
+  }
+#define BRDFTAB_MFA_NDF(NDF)                                                                               \
+  BRDFTAB_MFA_2D(NDF, "E_corr", "compact", "E_corr(mu, alpha): directional albedo, height-correlated G2"), \
+  BRDFTAB_MFA_2D(NDF, "E_sep", "compact", "E_sep(mu, alpha): directional albedo, separable G1 G1"),        \
+  BRDFTAB_MFA_2D(NDF, "split_scale", "compact", "split_scale(mu, alpha): Integral f (1 - (1 - cos theta_d)^5) cos"), \
+  BRDFTAB_MFA_2D(NDF, "split_bias", "compact", "split_bias(mu, alpha): Integral f (1 - cos theta_d)^5 cos"),  \
+  BRDFTAB_MFA_2D(NDF, "E_corr", "precise", "E_corr(mu, alpha): directional albedo, height-correlated G2"), \
+  BRDFTAB_MFA_2D(NDF, "E_sep", "precise", "E_sep(mu, alpha): directional albedo, separable G1 G1"),        \
+  BRDFTAB_MFA_2D(NDF, "split_scale", "precise", "split_scale(mu, alpha): Integral f (1 - (1 - cos theta_d)^5) cos"), \
+  BRDFTAB_MFA_2D(NDF, "split_bias", "precise", "split_bias(mu, alpha): Integral f (1 - cos theta_d)^5 cos"), \
+  DatasetSchema{"microfacet_albedo_avg_" NDF "_Eavg_corr", false,                                          \
+                "Eavg_corr(alpha) = 2 Integral E_corr(mu) mu dmu of the " NDF " microfacet BRDF", 1, {kAlpha}}, \
+  DatasetSchema {                                                                                          \
+    "microfacet_albedo_avg_" NDF "_Eavg_sep", false,                                                       \
+        "Eavg_sep(alpha) = 2 Integral E_sep(mu) mu dmu of the " NDF " microfacet BRDF", 1, { kAlpha }      \
+  }
+#define BRDFTAB_MFA_G3(Q, TEXT)                                                                            \
+  DatasetSchema {                                                                                          \
+    "microfacet_albedo_gbeckmann_" Q "_compact", false,                                                    \
+        TEXT " of the generalized Beckmann microfacet BRDF (F = 1), on (p, beta, mu)", 3, { kP, kBeta, kMu } \
+  }
+
+// Index: ndf (0 ggx, 1 beckmann) * 10 + variant (0 compact, 1 precise) * 4 + quantity; the
+// averages at ndf * 10 + 8 + qa.
+inline constexpr std::array kNdfDatasets{BRDFTAB_MFA_NDF("ggx"), BRDFTAB_MFA_NDF("beckmann")};
+inline constexpr std::array kGBeckmann3d{
+    BRDFTAB_MFA_G3("E_corr", "E_corr(mu, beta, p)"), BRDFTAB_MFA_G3("E_sep", "E_sep(mu, beta, p)"),
+    BRDFTAB_MFA_G3("split_scale", "split_scale(mu, beta, p)"), BRDFTAB_MFA_G3("split_bias", "split_bias(mu, beta, p)")};
+inline constexpr DatasetSchema kGBeckmannMaterial{
+    "microfacet_albedo_gbeckmann_material_", true,
+    "directional albedo quantity of the generalized Beckmann microfacet BRDF (F = 1) at fixed p, on (beta, mu): ", 2,
+    {kBeta, kMu}};
+inline constexpr std::array kGBeckmannAvg{
+    DatasetSchema{"microfacet_albedo_avg_gbeckmann_Eavg_corr", false,
+                  "Eavg_corr(beta, p) = 2 Integral E_corr(mu) mu dmu of the generalized Beckmann microfacet BRDF", 2,
+                  {kP, kBeta}},
+    DatasetSchema{"microfacet_albedo_avg_gbeckmann_Eavg_sep", false,
+                  "Eavg_sep(beta, p) = 2 Integral E_sep(mu) mu dmu of the generalized Beckmann microfacet BRDF", 2,
+                  {kP, kBeta}}};
+#undef BRDFTAB_MFA_2D
+#undef BRDFTAB_MFA_NDF
+#undef BRDFTAB_MFA_G3
+
+inline constexpr std::array kDatasets = [] {
+  std::array<DatasetSchema, kNdfDatasets.size() + kGBeckmann3d.size() + 1 + kGBeckmannAvg.size()> a{};
+  std::size_t i = 0;
+  for (const auto& d : kNdfDatasets) a[i++] = d;
+  for (const auto& d : kGBeckmann3d) a[i++] = d;
+  a[i++] = kGBeckmannMaterial;
+  for (const auto& d : kGBeckmannAvg) a[i++] = d;
+  return a;
+}();
+
+// The schema of a (ndf, variant, quantity) table; ndf 0 = ggx, 1 = beckmann; compact or precise.
+inline constexpr const DatasetSchema& ndf_dataset(int ndf, bool precise, int quantity) {
+  return kNdfDatasets[static_cast<std::size_t>(ndf * 10 + (precise ? 4 : 0) + quantity)];
+}
+inline constexpr const DatasetSchema& ndf_avg_dataset(int ndf, int avg_quantity) {
+  return kNdfDatasets[static_cast<std::size_t>(ndf * 10 + 8 + avg_quantity)];
+}
+// The per-material dataset name for kurtosis p and quantity index q.
+inline std::string material_dataset(double p, int quantity) {
+  return std::string(kGBeckmannMaterial.name) + "p" + lookup::format_number(p) + "_" +
+         std::string(kQuantities[static_cast<std::size_t>(quantity)]);
+}
+
+// Kulla & Conty 2017 ("Revisiting physically based shading at Imageworks", energy
+// compensation): the multiple-scattering lobe
+//   f_ms(mu_o, mu_i) = (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg))
+// and its Fresnel factor for coloured conductors
+//   F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)).
+// The one definition of both, shared by numerics::kulla_conty_lobe (checked arguments) and the
+// table-driven lookup::microfacet_albedo helpers. No argument checks here.
+inline double kulla_conty_lobe_formula(double e_o, double e_i, double e_avg) {
+  return (1.0 - e_o) * (1.0 - e_i) / (std::numbers::pi * (1.0 - e_avg));
+}
+inline double kulla_conty_fresnel_factor_formula(double f_avg, double e_avg) {
+  return f_avg * f_avg * e_avg / (1.0 - f_avg * (1.0 - e_avg));
+}
+
+}  // namespace brdftab::schema::microfacet_albedo

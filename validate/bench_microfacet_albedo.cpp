@@ -1,0 +1,73 @@
+// `brdftab bench` group of the microfacet_albedo family: exact E and E_avg, the compact and
+// precise tables (all four quantities per call) and the table-driven Kulla-Conty lobe, and
+// the generation time of the test tables.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "generators/family.hpp"
+#include "lookup/microfacet_albedo.hpp"
+#include "lookup/table_set.hpp"
+#include "numerics/microfacet_albedo.hpp"
+#include "validate/bench.hpp"
+
+namespace brdftab::validate::microfacet_albedo {
+
+void register_benchmarks(const BenchContext& ctx) {
+  // (mu, alpha): mu log-uniform in [1e-3, 1], alpha log-uniform in [0.01, 1].
+  auto pts = std::make_shared<std::vector<double>>();
+  std::mt19937_64 rng(1010);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  for (int i = 0; i < 64; ++i) {
+    pts->push_back(std::pow(1e-3, uni(rng)));
+    pts->push_back(std::pow(0.01, uni(rng)));
+  }
+  for (auto [name, kind] : {std::pair{"ggx", numerics::NdfKind::ggx}, std::pair{"beckmann", numerics::NdfKind::beckmann}}) {
+    const std::string n(name);
+    benchmark::RegisterBenchmark(("microfacet_albedo/exact/" + n).c_str(), [pts, kind](benchmark::State& state) {
+      for (auto _ : state)
+        for (std::size_t i = 0; i < 8; ++i)  // 8 points: ms each
+          benchmark::DoNotOptimize(numerics::microfacet_albedo({kind, (*pts)[2 * i + 1]}, (*pts)[2 * i]));
+      per_call(state, 8);
+    })->Iterations(2);
+    benchmark::RegisterBenchmark(("microfacet_albedo/exact/avg_" + n).c_str(), [kind](benchmark::State& state) {
+      for (auto _ : state) benchmark::DoNotOptimize(numerics::microfacet_albedo_avg({kind, 0.3}));
+      per_call(state, 1);
+    })->Iterations(1);
+    for (bool precise : {false, true}) {
+      try {
+        auto ts = std::make_shared<lookup::TableSet>(ctx.tables_dir);
+        auto t = std::make_shared<lookup::MicrofacetAlbedoTables>(lookup::microfacet_albedo_tables(*ts, n, precise));
+        const std::string v = precise ? "precise" : "compact";
+        benchmark::RegisterBenchmark(("microfacet_albedo/table/" + n + "_" + v).c_str(), [pts, ts, t, kind](benchmark::State& state) {
+          for (auto _ : state)
+            for (std::size_t i = 0; i < pts->size(); i += 2)
+              benchmark::DoNotOptimize(lookup::microfacet_albedo(*t, (*pts)[i], (*pts)[i + 1]));
+          double err = 0;
+          for (std::size_t i = 0; i < 16; i += 2)  // 8 exact values
+            err = std::max(err, std::abs(lookup::microfacet_albedo(*t, (*pts)[i], (*pts)[i + 1]).e_corr -
+                                         numerics::microfacet_albedo({kind, (*pts)[i + 1]}, (*pts)[i]).e_corr));
+          per_call(state, pts->size() / 2);
+          state.counters["max_abs_err_E_corr"] = err;
+        });
+        if (precise)
+          benchmark::RegisterBenchmark(("microfacet_albedo/table/" + n + "_kulla_conty_lobe").c_str(),
+                                       [pts, ts, t](benchmark::State& state) {
+                                         for (auto _ : state)
+                                           for (std::size_t i = 0; i + 2 < pts->size(); i += 2)
+                                             benchmark::DoNotOptimize(lookup::kulla_conty_lobe(
+                                                 *t, (*pts)[i], (*pts)[i + 2], (*pts)[i + 1]));
+                                         per_call(state, pts->size() / 2 - 1);
+                                       });
+      } catch (const std::exception&) {
+      }
+    }
+  }
+  register_generation_benchmark("microfacet_albedo/generate/test_tables", "microfacet_albedo",
+                                gen::find_family("microfacet_albedo")->test_entry());
+}
+
+}  // namespace brdftab::validate::microfacet_albedo
