@@ -36,7 +36,7 @@ namespace brdftab::schema::microfacet_albedo {
 
 inline constexpr std::string_view kFile = "microfacet_albedo.h5";
 
-inline constexpr AxisSchema kMu{"mu", lookup::Transform::log, "1"};
+inline constexpr AxisSchema kMu{"mu", lookup::Transform::fourth_root, "1"};
 inline constexpr AxisSchema kAlpha{"alpha", lookup::Transform::log, "1"};
 inline constexpr AxisSchema kBeta{"beta", lookup::Transform::log, "1"};
 inline constexpr AxisSchema kP{"p", lookup::Transform::log, "1"};

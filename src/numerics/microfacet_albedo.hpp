@@ -49,7 +49,7 @@ MicrofacetAlbedoAvg microfacet_albedo_avg(const MicrofacetNdf& ndf);
 // The same in parts, for callers that evaluate E on the nodes themselves (a table
 // generator sharing rows): the nodes for a roughness alpha (and their weights), then the
 // average from E at those nodes and at mu_min.
-inline constexpr int kAvgOrder = 20;
+inline constexpr int kAvgOrder = 12;
 std::vector<double> microfacet_albedo_avg_nodes(double alpha, std::vector<double>* weights = nullptr);
 MicrofacetAlbedoAvg microfacet_albedo_avg_from_nodes(const std::vector<double>& mus, const std::vector<double>& weights,
                                                      const std::vector<MicrofacetAlbedo>& e, const MicrofacetAlbedo& e_min);
