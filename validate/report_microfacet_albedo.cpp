@@ -42,7 +42,7 @@ void curves(ReportContext& ctx, const std::string& ndf, const lookup::Microfacet
   *ctx.markdown << "E curves: `microfacet_albedo_" << ndf << "_curves.{csv,png}`.\n\n";
 }
 
-// Error map: exact E on an 10 x 10 (log alpha, log mu) set of cell centres, against the
+// Error map: exact E on a 10 x 10 (log alpha, log mu) set of cell centres, against the
 // compact and precise tables (all four quantities).
 void error_map(ReportContext& ctx, const std::string& ndf, numerics::NdfKind kind, const lookup::MicrofacetAlbedoTables& tc,
                const lookup::MicrofacetAlbedoTables& tp, int ndf_index) {
@@ -92,8 +92,8 @@ void error_map(ReportContext& ctx, const std::string& ndf, numerics::NdfKind kin
 
 // White furnace from the tables: albedo of f + f_ms for outgoing mu_o is
 //   E(mu_o) + Integral f_ms mu_i dw_i = E(mu_o) + 2 Integral_0^1 pi f_ms(mu_o, mu_i) mu_i dmu_i,
-// with f_ms = lookup::kulla_conty_lobe (tables: E and E_avg) and a 64-point Gauss-Legendre
-// rule on [0, 1] in sqrt(mu)-spaced panels... here on panels [0, 1e-3], [1e-3, 0.03], [0.03, 1].
+// with f_ms = lookup::kulla_conty_lobe (tables: E and E_avg) and 64-point Gauss-Legendre
+// rules on the panels [1e-6, 1e-3], [1e-3, 0.03], [0.03, 1] in mu_i.
 void furnace(ReportContext& ctx, const std::string& ndf, const lookup::MicrofacetAlbedoTables& t) {
   const numerics::GaussLegendreRule rule = numerics::gauss_legendre_rule(64);
   const double edges[] = {1e-6, 1e-3, 0.03, 1.0};
