@@ -69,8 +69,12 @@ TEST_CASE("htsg sigma0: Lambert-W closed form equals the root of HTSG's equation
         const double ti = di * kDeg, tr = dr * kDeg;
         const double w = htsg_sigma0(sigma, tau, ti, tr), r = htsg_sigma0_root(sigma, tau, ti, tr);
         CHECK(std::abs(w - r) <= 1e-13 * r);
-        // Residual of sqrt(pi/2) z0 = (sigma/4)(K_i + K_r) exp(-z0^2 / (2 sigma^2)), z0 from sigma0.
-        const double z0 = sigma * std::sqrt(std::pow(sigma / w, 2) - 1.0);
+        // Residual of sqrt(pi/2) z0 = (sigma/4)(K_i + K_r) exp(-z0^2 / (2 sigma^2)), z0 from sigma0;
+        // recovering z0 = sigma sqrt((sigma/sigma0)^2 - 1) loses ~eps/t^2 (t = z0/sigma) to
+        // cancellation, so the residual is checked where t^2 > 1e-3 (the small-K limit below).
+        const double t2 = std::pow(sigma / w, 2) - 1.0;
+        if (t2 <= 1e-3) continue;
+        const double z0 = sigma * std::sqrt(t2);
         const double k = htsg_k(ti, sigma, tau) + htsg_k(tr, sigma, tau);
         const double lhs = std::sqrt(std::numbers::pi / 2) * z0;
         const double rhs = 0.25 * sigma * k * std::exp(-0.5 * z0 * z0 / (sigma * sigma));
@@ -96,13 +100,17 @@ TEST_CASE("htsg sigma0: limits and monotonicity") {
   CHECK_THROWS_AS(htsg_sigma0(-1, 3.0, 0.1, 0.0), std::domain_error);
 }
 
-TEST_CASE("Li-Torrance Eq. 8 fit: within 5 percent of sigma0 below 85 degrees at the paper's Fig. 9 setting") {
-  double worst = 0;
-  for (int i = 0; i <= 85; ++i)
-    for (int j = 0; j <= 85; ++j) {
+TEST_CASE("Li-Torrance Eq. 8 fit at the paper's Fig. 9 setting: close up to 80 degrees, not at 85") {
+  // The paper: "very similar, except when the incidence and reflection angles are greater than
+  // about 85 degrees". Measured: 2.2% up to 80 deg, 12.7% at (85, 85) deg.
+  double worst80 = 0;
+  for (int i = 0; i <= 80; ++i)
+    for (int j = 0; j <= 80; ++j) {
       const double ex = htsg_sigma0(0.5, 3.0, i * kDeg, j * kDeg);
-      worst = std::max(worst, std::abs(li_torrance_sigma0_fit(0.5, 3.0, i * kDeg, j * kDeg) - ex) / ex);
+      worst80 = std::max(worst80, std::abs(li_torrance_sigma0_fit(0.5, 3.0, i * kDeg, j * kDeg) - ex) / ex);
     }
-  CHECK(worst < 0.05);
-  CHECK(worst > 1e-3);  // a fit, not the exact function
+  CHECK(worst80 < 0.025);
+  CHECK(worst80 > 1e-3);  // a fit, not the exact function
+  const double ex85 = htsg_sigma0(0.5, 3.0, 85 * kDeg, 85 * kDeg);
+  CHECK(std::abs(li_torrance_sigma0_fit(0.5, 3.0, 85 * kDeg, 85 * kDeg) - ex85) / ex85 > 0.1);
 }

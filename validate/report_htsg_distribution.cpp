@@ -81,7 +81,7 @@ void report_distribution(ReportContext& ctx) {
     for (int i = 0; i < n; ++i) {
       const double g = ag.x_lo * std::pow(ag.x_hi / ag.x_lo, uni(rng));
       const double X = ax.x_lo + (ax.x_hi - ax.x_lo) * uni(rng);
-      const double e = std::abs(std::log(lookup::htsg_distribution(t, g, X)) - numerics::htsg_log_distribution(g, X));
+      const double e = std::abs(lookup::htsg_log_distribution(t, g, X) - numerics::htsg_log_distribution(g, X));
       if (e > worst) worst = e, at_g = g, at_x = X;
     }
     std::snprintf(buf, sizeof buf,

@@ -56,13 +56,14 @@ void report_model(ReportContext& ctx) {
         "all components (exact) | without f_fs | max albedo exact (theta_i) | max albedo fit | (f_dd + spec) "
         "albedo / k_dd, exact, theta_i = 10 / 60 / 80 deg |\n|---|---|---|---|---|---|---|\n";
   for (const auto& s : samples()) {
-    double fit_diff = 0;
+    double fit_diff = 0, fd_i = 0, fd_o = 0, fd_phi = 0;
     for (int i = 5; i <= 80; i += 5)
       for (int o = 0; o <= 80; o += 5)
         for (double phi : {0.0, std::numbers::pi}) {
           const auto ex = numerics::li_torrance_brdf(s.p, i * kDeg, o * kDeg, phi, numerics::LiTorrancePieces::exact);
           const auto ft = numerics::li_torrance_brdf(s.p, i * kDeg, o * kDeg, phi, numerics::LiTorrancePieces::fit);
-          if (ex.f > 1e-6) fit_diff = std::max(fit_diff, std::abs(ft.f - ex.f) / ex.f);
+          if (ex.f > 1e-6 && std::abs(ft.f - ex.f) / ex.f > fit_diff)
+            fit_diff = std::abs(ft.f - ex.f) / ex.f, fd_i = i, fd_o = o, fd_phi = phi;
         }
     double recip_all = 0, recip_nofs = 0;
     for (int i = 5; i <= 85; i += 10)
@@ -72,27 +73,33 @@ void report_model(ReportContext& ctx) {
           const auto b = numerics::li_torrance_brdf(s.p, o * kDeg, i * kDeg, phi, numerics::LiTorrancePieces::exact);
           const double scale = std::max(a.f, b.f);
           if (scale > 0) recip_all = std::max(recip_all, std::abs(a.f - b.f) / scale);
-          const double an = a.f - a.f_fs, bn = b.f - b.f_fs;
-          if (std::max(an, bn) > 0) recip_nofs = std::max(recip_nofs, std::abs(an - bn) / std::max(an, bn));
+          // Summed without f_fs (not f - f_fs, which leaves f_fs's rounding where f_dd underflows).
+          const double an = a.f_dd + a.f_udf + a.f_uds, bn = b.f_dd + b.f_udf + b.f_uds;
+          if (std::max(an, bn) > 1e-12 * scale) recip_nofs = std::max(recip_nofs, std::abs(an - bn) / std::max(an, bn));
         }
-    double amax_e = 0, amax_f = 0, at_e = 0;
+    double amax_e = 0, amax_f = 0, at_e = 0, at_f = 0;
     double ratio[3] = {0, 0, 0};
     int r = 0;
     for (int i = 0; i <= 85; i += 5) {
       const auto ae = numerics::li_torrance_albedo(s.p, i * kDeg, numerics::LiTorrancePieces::exact);
       const auto af = numerics::li_torrance_albedo(s.p, i * kDeg, numerics::LiTorrancePieces::fit);
       if (ae.total > amax_e) amax_e = ae.total, at_e = i;
-      amax_f = std::max(amax_f, af.total);
+      if (af.total > amax_f) amax_f = af.total, at_f = i;
       if (i == 10 || i == 60 || i == 80) ratio[r++] = ae.dd_spec / s.p.k_dd;
     }
-    std::snprintf(buf, sizeof buf, "| %s | %.3f | %.2e | %.2e | %.4f (%g deg) | %.4f | %.3f / %.3f / %.3f |\n", s.name,
-                  fit_diff, recip_all, recip_nofs, amax_e, at_e, amax_f, ratio[0], ratio[1], ratio[2]);
+    std::snprintf(buf, sizeof buf, "| %s | %.3f (%g, %g deg, phi %.2f) | %.2e | %.2e | %.4f (%g deg) | %.4f (%g deg) | %.3f / %.3f / %.3f |\n", s.name,
+                  fit_diff, fd_i, fd_o, fd_phi, recip_all, recip_nofs, amax_e, at_e, amax_f, at_f, ratio[0], ratio[1], ratio[2]);
     md << buf;
   }
   md << "\nReciprocity: f_dd, f_udf, f_uds and rho_spec are symmetric in (L, V) to rounding; the forward-scattering "
         "term Eq. 13-14 is not (theta_f is measured from the forward horizontal of L only) and is a finding of the "
         "paper's model, not a misprint. Energy: the albedo includes rho_spec; a value above 1 is a finding (the "
-        "paper fits k_fs freely, Sec. 3.5). k_dd is said (Sec. 3.1) to equal the directional-hemispherical "
+        "paper fits k_fs freely, Sec. 3.5). With the fits, Eq. 3 + Eq. 10 double count when g is not large: "
+        "Eq. 10 is the g >> 1 limit, whose Beckmann form carries the whole reflected share (its projected "
+        "integral is 1) where HTSG's series carries 1 - exp(-g), and Eq. 3 adds exp(-g) on top; this lifts the fit "
+        "albedo of the smooth sample #45 above 1 at large theta_i (g = (4 pi sigma_e cos theta_i / lambda)^2 "
+        "falls below 1), while the exact pieces stay at F S. k_dd is said (Sec. 3.1) to equal the "
+        "directional-hemispherical "
         "reflectance of the specular + directional-diffuse terms: the last column is that albedo over k_dd.\n\n";
 }
 

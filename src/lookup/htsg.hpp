@@ -20,6 +20,12 @@ class HtsgDistributionTable {
   const Table* t_;
 };
 
+// ln Dhat(g, X) as stored (finite where Dhat underflows); Dhat is even in X.
+inline double htsg_log_distribution(const HtsgDistributionTable& t, double g, double X,
+                                    OutOfDomain policy = OutOfDomain::clamp) {
+  return t.table().eval2(g, std::abs(X), policy);
+}
+
 // Dhat(g, X) = exp(ln Dhat) from the table; Dhat is even in X (|X| is looked up).
 inline double htsg_distribution(const HtsgDistributionTable& t, double g, double X,
                                 OutOfDomain policy = OutOfDomain::clamp) {

@@ -42,10 +42,12 @@ double htsg_sigma0_root(double sigma, double tau, double theta_i, double theta_r
   if (std::isinf(k)) return 0.0;
   if (k == 0.0) return sigma;
   // HTSG: h(z) = sqrt(pi/2) z - (sigma/4) K exp(-z^2 / (2 sigma^2)) is increasing, h(0) < 0, and
-  // h(z_hi) >= 0 at z_hi = sigma K / (4 sqrt(pi/2)) (the exponential is <= 1).
+  // h(z_hi) > 0 at z_hi = 1.01 sigma K / (4 sqrt(pi/2)) (the exponential is <= 1; the 1.01 keeps
+  // the sign when z_hi / sigma is so small that the exponential rounds to 1).
   const double c = std::sqrt(std::numbers::pi / 2);
   const auto h = [&](double z) { return c * z - 0.25 * sigma * k * std::exp(-0.5 * (z / sigma) * (z / sigma)); };
-  const double z_hi = 0.25 * sigma * k / c;
+  const double z_hi = 1.01 * 0.25 * sigma * k / c;
+  if (!(h(0.0) < 0.0)) return sigma;  // K sigma / 4 underflows
   std::uintmax_t iters = 200;
   const auto r = boost::math::tools::toms748_solve(h, 0.0, z_hi, h(0.0), h(z_hi),
                                                    boost::math::tools::eps_tolerance<double>(52), iters);

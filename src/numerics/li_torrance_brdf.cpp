@@ -150,8 +150,13 @@ LiTorranceAlbedo li_torrance_albedo(const LiTorranceParams& p, double theta_i, L
     for (int seg = 0; seg < 2; ++seg) {
       const double r0 = cuts[seg], r1 = cuts[seg + 1];
       if (!(r1 > r0)) continue;
+      // The segment that ends on the rim (r = r_max, cos(theta_o) ~ sqrt(r_max - r)) is mapped by
+      // r = r0 + L u (2 - u), which makes cos(theta_o) analytic in u; the lobe segment is plain.
+      const bool rim = r1 == r_max;
       for (int j = 0; j < n_r; ++j) {
-        const double r = r0 + 0.5 * (r1 - r0) * (rr.x[j] + 1.0), wr = 0.5 * (r1 - r0) * rr.w[j];
+        const double u = 0.5 * (rr.x[j] + 1.0), len = r1 - r0;
+        const double r = rim ? r0 + len * u * (2.0 - u) : r0 + len * u;
+        const double wr = 0.5 * rr.w[j] * (rim ? 2.0 * len * (1.0 - u) : len);
         const double x = px + r * ex, y = r * ey;
         const double rho2 = std::min(1.0, x * x + y * y);
         const double theta_o = std::asin(std::sqrt(rho2));
