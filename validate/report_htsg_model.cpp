@@ -91,6 +91,23 @@ void report_model(ReportContext& ctx) {
                   fit_diff, fd_i, fd_o, fd_phi, recip_all, recip_nofs, amax_e, at_e, amax_f, at_f, ratio[0], ratio[1], ratio[2]);
     md << buf;
   }
+  // As printed: Eq. 10 with v = 2 pi (L + V) / lambda multiplies f_dd by (2 pi / lambda)^2 (in the
+  // length unit of lambda); Eq. 3 divides the mirror reflectance by cos(theta_i) once more.
+  {
+    const auto s41 = samples()[1].p;
+    const auto a = numerics::li_torrance_albedo(s41, 30 * kDeg, numerics::LiTorrancePieces::fit);
+    const double spec = numerics::li_torrance_brdf(s41, 30 * kDeg, 0, 0, numerics::LiTorrancePieces::fit).rho_spec;
+    const double k2 = std::pow(2 * std::numbers::pi / s41.lambda, 2);
+    const auto s45 = samples()[0].p;
+    const double spec80 = numerics::li_torrance_brdf(s45, 80 * kDeg, 0, 0, numerics::LiTorrancePieces::exact).rho_spec;
+    std::snprintf(buf, sizeof buf,
+                  "\nAs printed (ERRATA): Eq. 10 with v = 2 pi (L + V) / lambda scales f_dd by (2 pi / lambda)^2 = "
+                  "%.1f um^-2, so sample #41's f_dd albedo at 30 deg would be %.1f instead of %.4f (fits); Eq. 3 "
+                  "with 1/(cos theta_i cos theta_r) makes #45's mirror reflectance at 80 deg %.4f instead of %.4f "
+                  "(exact pieces), /cos theta_i.\n",
+                  k2, k2 * (a.dd_spec - spec), a.dd_spec - spec, spec80 / std::cos(80 * kDeg), spec80);
+    md << buf;
+  }
   md << "\nReciprocity: f_dd, f_udf, f_uds and rho_spec are symmetric in (L, V) to rounding; the forward-scattering "
         "term Eq. 13-14 is not (theta_f is measured from the forward horizontal of L only) and is a finding of the "
         "paper's model, not a misprint. Energy: the albedo includes rho_spec; a value above 1 is a finding (the "
