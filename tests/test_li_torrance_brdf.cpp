@@ -12,6 +12,7 @@
 #include "numerics/fresnel_schlick.hpp"
 #include "numerics/htsg_shadowing.hpp"
 #include "numerics/htsg_sigma0.hpp"
+#include "numerics/htsg_specular.hpp"
 #include "numerics/li_torrance_brdf.hpp"
 #include "numerics/microfacet_ndf.hpp"
 
@@ -80,6 +81,12 @@ TEST_CASE("Li-Torrance: specular reflectance is Davies' attenuation (Eq. 2) with
   // Normal incidence: sigma_0 = sigma, S = 1, F = f0: Eq. 2 exactly.
   CHECK(li_torrance_brdf(p, 0.0, 0.3, 0.0, LiTorrancePieces::exact).rho_spec ==
         doctest::Approx(0.5 * std::exp(-std::pow(4 * std::numbers::pi * 0.1 / 0.55, 2))).epsilon(1e-13));
+  // Eq. 2 is Eq. 4's apparent roughness at the mirror: [2 pi sigma (2 cos) / lambda]^2 = (4 pi sigma cos / lambda)^2.
+  for (double ti : {0.0, 40.0, 89.0}) {
+    const double c = std::cos(ti * kDeg), g4 = std::pow(2 * std::numbers::pi * 0.3 * (c + c) / 0.55, 2);
+    CHECK(davies_attenuation(0.3, 0.55, ti * kDeg) == doctest::Approx(std::exp(-g4)).epsilon(1e-14));
+  }
+  CHECK_THROWS_AS(davies_attenuation(0.3, 0.0, 0.1), std::domain_error);
   for (double ti : {30.0, 60.0, 85.0}) {
     const double a = ti * kDeg, c = std::cos(a);
     const auto v = li_torrance_brdf(p, a, 0.3, 0.0, LiTorrancePieces::exact);

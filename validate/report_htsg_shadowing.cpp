@@ -7,6 +7,7 @@
 
 #include "numerics/htsg_shadowing.hpp"
 #include "numerics/htsg_sigma0.hpp"
+#include "numerics/htsg_specular.hpp"
 #include "validate/report_htsg_pieces.hpp"
 
 namespace brdftab::validate::htsg {
@@ -147,10 +148,10 @@ void report_sigma0(ReportContext& ctx) {
   md << "\nDavies attenuation (Eq. 2, sigma) vs HTSG exp(-g) at the mirror (sigma_0), sigma/lambda = 0.2, tau/sigma = 5:\n\n"
         "| theta_i [deg] | Davies | HTSG exp(-g) | sigma_0/sigma |\n|---|---|---|---|\n";
   for (double deg : {0.0, 30.0, 60.0, 75.0, 85.0, 89.0}) {
-    const double th = deg * kDeg, c = std::cos(th);
-    const double davies = std::exp(-std::pow(4 * std::numbers::pi * 0.2 * c, 2));
+    const double th = deg * kDeg;
+    const double davies = numerics::davies_attenuation(0.2, 1.0, th);
     const double s0 = numerics::htsg_sigma0(0.2, 1.0, th, th);
-    const double htsg = std::exp(-std::pow(4 * std::numbers::pi * s0 * c, 2));
+    const double htsg = numerics::davies_attenuation(s0, 1.0, th);
     std::snprintf(buf, sizeof buf, "| %g | %.6g | %.6g | %.4f |\n", deg, davies, htsg, s0 / 0.2);
     md << buf;
   }

@@ -12,6 +12,7 @@
 #include "numerics/htsg_distribution.hpp"
 #include "numerics/htsg_shadowing.hpp"
 #include "numerics/htsg_sigma0.hpp"
+#include "numerics/htsg_specular.hpp"
 
 namespace brdftab::numerics {
 
@@ -118,10 +119,11 @@ LiTorranceValue li_torrance_brdf(const LiTorranceParams& p, double theta_i, doub
     out.f_fs = p.k_fs / kPi * Ti * To * (1.0 - ci) * (1.0 - co) * e;  // Eq. 13
   }
   out.f = out.f_dd + out.f_udf + out.f_uds + out.f_fs;
-  // Eq. 3 corrected (as Eq. 16): rho_spec = k_dd F(theta_i) S(theta_i, theta_i) exp(-g), g at the mirror.
+  // Eq. 3 corrected (as Eq. 16): rho_spec = k_dd F(theta_i) S(theta_i, theta_i) exp(-g), g at the mirror
+  // (Davies' Eq. 2 with sigma_e).
   const double sig_s = pc.sigma_e(p, theta_i, theta_i);
   const double S_i = pc.shadow(theta_i, p);
-  out.rho_spec = p.k_dd * pc.fresnel(p.f0, ci) * S_i * S_i * std::exp(-apparent_roughness(sig_s, p.lambda, 2 * ci));
+  out.rho_spec = p.k_dd * pc.fresnel(p.f0, ci) * S_i * S_i * davies_attenuation(sig_s, p.lambda, theta_i);
   return out;
 }
 
