@@ -12,7 +12,8 @@
   X(demo)                   \
   X(smith_gbeckmann)        \
   X(hfunc)                  \
-  X(ghs_sigma_rel)           \
+  X(ghs_sigma_rel)          \
   X(ls)                     \
   X(fresnel)                \
-  X(microfacet_albedo)
+  X(microfacet_albedo)      \
+  X(htsg)
