@@ -10,93 +10,14 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "numerics/domain_check.hpp"
+#include "numerics/microfacet_albedo_integrator.hpp"
 
 namespace brdftab::numerics {
 
 namespace {
-constexpr double kPi = boost::math::constants::pi<double>();
-using GK = boost::math::quadrature::gauss_kronrod<double, 21>;
-
-// Sorted, de-duplicated knots in [lo, hi] including both ends.
-std::vector<double> knots_in(std::vector<double> k, double lo, double hi) {
-  k.push_back(lo);
-  k.push_back(hi);
-  std::vector<double> out;
-  for (double x : k)
-    if (x >= lo && x <= hi) out.push_back(x);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
-// Adaptive Gauss-Kronrod of a vector-valued integrand (N components). A panel is accepted
-// when the Kronrod-Gauss difference of every component is below tol_density * width (so
-// the total is below tol_density * total length however deep the bisection goes) or below
-// the panel's rounding floor 100 eps Integral |f| (at most depth 14).
-template <std::size_t N, class F>
-void gk_vec(const F& f, double a, double b, double tol_density, int depth, std::array<double, N>& acc) {
-  const auto& xk = GK::abscissa();
-  const auto& wk = GK::weights();
-  const auto& wg = boost::math::quadrature::gauss<double, 10>::weights();
-  const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-  std::array<double, N> sk{}, sg{};
-  double l1 = 0.0;  // Integral of max_q |f_q| on the panel (Kronrod rule): the rounding floor
-  for (std::size_t j = 0; j < xk.size(); ++j) {
-    const bool gauss_node = (j % 2 == 1);  // the 10-point Gauss nodes are the odd Kronrod indices
-    const auto add = [&](double x) {
-      const std::array<double, N> v = f(x);
-      double vmax = 0.0;
-      for (std::size_t q = 0; q < N; ++q) vmax = std::max(vmax, std::abs(v[q]));
-      l1 += wk[j] * vmax;
-      for (std::size_t q = 0; q < N; ++q) {
-        sk[q] += wk[j] * v[q];
-        if (gauss_node) sg[q] += wg[j / 2] * v[q];
-      }
-    };
-    if (j == 0) {
-      add(c);
-    } else {
-      add(c + h * xk[j]);
-      add(c - h * xk[j]);
-    }
-  }
-  double err = 0.0;
-  for (std::size_t q = 0; q < N; ++q) err = std::max(err, std::abs(h * (sk[q] - sg[q])));
-  // Accept at the requested density or at the rounding floor of this panel's own values
-  // (a narrow high peak carries rounding noise ~eps * peak that no bisection removes).
-  if (err <= tol_density * (b - a) || err <= 100.0 * std::numeric_limits<double>::epsilon() * h * l1 || depth >= 14) {
-    for (std::size_t q = 0; q < N; ++q) acc[q] += h * sk[q];
-    return;
-  }
-  gk_vec<N>(f, a, c, tol_density, depth + 1, acc);
-  gk_vec<N>(f, c, b, tol_density, depth + 1, acc);
-}
-
-// Over the panels of a knot list: a first non-adaptive pass gives the magnitude M (largest
-// component), then every panel is refined to rel_tol * M in total.
-// A known magnitude (scale > 0) skips the first pass.
-template <std::size_t N, class F>
-std::array<double, N> integrate_panels(const F& f, const std::vector<double>& knots, double rel_tol, double scale = 0.0) {
-  double m = scale;
-  if (m <= 0.0) {
-    std::array<double, N> rough{};
-    for (std::size_t i = 0; i + 1 < knots.size(); ++i) gk_vec<N>(f, knots[i], knots[i + 1], 1e300, 14, rough);
-    for (double v : rough) m = std::max(m, std::abs(v));
-    if (m == 0.0) return rough;
-  }
-  const double length = knots.back() - knots.front();
-  std::array<double, N> acc{};
-  for (std::size_t i = 0; i + 1 < knots.size(); ++i) gk_vec<N>(f, knots[i], knots[i + 1], rel_tol * m / length, 0, acc);
-  return acc;
-}
-
-// Geometric knots around x0 at distances w * 4^k (k = -2..8) on the side(s) requested.
-void add_graded(std::vector<double>& k, double x0, double w, bool below, bool above) {
-  for (double d = w / 16.0; d < 4.0; d *= 4.0) {
-    if (below) k.push_back(x0 - d);
-    if (above) k.push_back(x0 + d);
-  }
-}
+using albedo_integrator::add_graded;
+using albedo_integrator::integrate_panels;
+using albedo_integrator::knots_in;
 }  // namespace
 
 // Geometry. o = (s_o, 0, mu_o), i = (-s_i cos psi, -s_i sin psi, mu_i) (psi = 0: mirror plane).
@@ -107,36 +28,17 @@ void add_graded(std::vector<double>& k, double x0, double w, bool below, bool ab
 namespace {
 MicrofacetAlbedo albedo_impl(const MicrofacetNdf& ndf, const NdfEvaluator& dfun, double mu_o) {
   require_closed("mu", mu_o, kAlbedoMuMin, 1.0, "[1e-6, 1]");
-  const double alpha = ndf.alpha;
-  const double s_o = std::sqrt((1.0 - mu_o) * (1.0 + mu_o));
   const double lambda_o = ndf_lambda(ndf, mu_o);
   const double g1_o = 1.0 / (1.0 + lambda_o);
-
-  // Inner: {Integral D dpsi, Integral D Delta dpsi} over [0, pi].
-  const auto inner = [&](double mu_i) -> std::array<double, 2> {
-    const double s_i = std::sqrt((1.0 - mu_i) * (1.0 + mu_i));
-    const double ds = (mu_o - mu_i) * (mu_o + mu_i) / (s_i + s_o);
-    const double sum_mu = mu_i + mu_o;
-    const auto g = [&](double psi) -> std::array<double, 2> {
-      const double sh = std::sin(0.5 * psi);
-      const double xy2 = ds * ds + 4.0 * s_i * s_o * sh * sh;  // |i_xy + o_xy|^2
-      const double t2 = xy2 / (sum_mu * sum_mu);
-      const double d = dfun.d_tan2(t2);
-      // cos(theta_d) = |i + o| / 2 from the same parts (1 + mu_i mu_o - s_i s_o cos(psi)
-      // cancels for grazing pairs: noise ~1e-16 / cos(theta_d)).
-      const double m = 1.0 - 0.5 * std::sqrt(xy2 + sum_mu * sum_mu);
-      const double m2 = m * m;
-      return {d, d * m2 * m2 * m};
-    };
-    // Peak width in psi: t ~ alpha  <=>  sqrt(s_i s_o) psi ~ alpha (mu_i + mu_o).
-    std::vector<double> k;
-    const double spread = std::sqrt(s_i * s_o);
-    if (spread > 0.0) add_graded(k, 0.0, std::min(1.0, alpha * sum_mu / spread), false, true);
-    return integrate_panels<2>(g, knots_in(k, 0.0, kPi), 1e-12);
+  // Inner: {Integral D dpsi, Integral D Delta dpsi}, Delta = (1 - cos(theta_d))^5.
+  const auto kernel = [&](double t2, double cos_d) -> std::array<double, 2> {
+    const double d = dfun.d_tan2(t2);
+    const double m = 1.0 - cos_d;
+    const double m2 = m * m;
+    return {d, d * m2 * m2 * m};
   };
   // Outer: {G2_corr K, G2_sep K, G2_corr K_Delta} / (2 mu_o).
-  const auto outer = [&](double mu_i) -> std::array<double, 3> {
-    if (mu_i <= 0.0) return {0.0, 0.0, 0.0};
+  const auto weight = [&](double mu_i, const auto& inner) -> std::array<double, 3> {
     const double lambda_i = ndf_lambda(ndf, mu_i);
     if (std::isinf(lambda_i)) return {0.0, 0.0, 0.0};
     const std::array<double, 2> kk = inner(mu_i);
@@ -144,11 +46,7 @@ MicrofacetAlbedo albedo_impl(const MicrofacetNdf& ndf, const NdfEvaluator& dfun,
     const double w = 0.5 / mu_o;
     return {w * corr * kk[0], w * sep * kk[0], w * corr * kk[1]};
   };
-  // Knots: the peak mu_i = mu_o (width alpha max(s_o, alpha) in mu), grazing (scale alpha).
-  std::vector<double> k;
-  add_graded(k, mu_o, alpha * std::max(s_o, alpha), true, true);
-  add_graded(k, 0.0, alpha, false, true);
-  const std::array<double, 3> r = integrate_panels<3>(outer, knots_in(k, 0.0, 1.0), 1e-11, 1.0);  // E = O(1)
+  const std::array<double, 3> r = albedo_integrator::hemisphere_integral<2, 3>(mu_o, ndf.alpha, kernel, weight);
   // The exact values are in [0, 1] (E_corr <= Integral D_o(h) G2 / G1(o) dh <= 1); min()
   // removes rounding above 1 (measured <= 2e-16).
   const double corr = std::min(1.0, r[0]), sep = std::min(1.0, r[1]);
