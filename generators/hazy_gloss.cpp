@@ -6,6 +6,8 @@
 #include "generators/hazy_gloss.hpp"
 
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <regex>
 #include <set>
 #include <tuple>
@@ -78,7 +80,32 @@ nlohmann::json to_json(const Config& c) {
 }
 
 namespace {
-BuiltTable build_one(const Material& m, const Config& c, int ndf, bool compound, const GenerateContext& ctx) {
+// One integration gives both maskings (numerics::hazy_gloss_albedo); the patch and compound
+// tables of a material share the grid and the seeded error points, so the second table
+// takes its values from this memo (keyed by material, ndf and the exact mu).
+class AlbedoMemo {
+ public:
+  numerics::HazyGlossAlbedo get(const std::string& material, int ndf, const numerics::HazyGlossComposite& comp, double mu) {
+    const Key key{material, ndf, mu};
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      const auto it = values_.find(key);
+      if (it != values_.end()) return it->second;
+    }
+    const numerics::HazyGlossAlbedo a = numerics::hazy_gloss_albedo(comp, mu);
+    std::lock_guard<std::mutex> lock(mutex_);
+    values_.emplace(key, a);
+    return a;
+  }
+
+ private:
+  using Key = std::tuple<std::string, int, double>;
+  std::mutex mutex_;
+  std::map<Key, numerics::HazyGlossAlbedo> values_;
+};
+
+BuiltTable build_one(const Material& m, const Config& c, int ndf, bool compound, const GenerateContext& ctx,
+                     AlbedoMemo& memo) {
   const schema::DatasetSchema& d = sc::albedo_dataset(ndf, compound);
   const numerics::NdfKind kind = ndf == 0 ? numerics::NdfKind::ggx : numerics::NdfKind::beckmann;
   const numerics::HazyGlossMaterial hm{m.r_c, m.g, m.alpha_n, m.beta_h, m.lambda_h, false};
@@ -100,8 +127,8 @@ BuiltTable build_one(const Material& m, const Config& c, int ndf, bool compound,
   spec.generator = "hazy_gloss";
   spec.error_rows = 1;
   spec.error_per_row = c.error_points;
-  const RowFunction row = pointwise_parallel_row([comp, compound](double mu) {
-    const numerics::HazyGlossAlbedo a = numerics::hazy_gloss_albedo(comp, mu);
+  const RowFunction row = pointwise_parallel_row([&memo, name = m.name, ndf, comp, compound](double mu) {
+    const numerics::HazyGlossAlbedo a = memo.get(name, ndf, comp, mu);
     return compound ? a.compound : a.large_patch;
   });
   BuiltTable t = build_table(spec, row, ctx);
@@ -123,9 +150,10 @@ BuiltTable build_one(const Material& m, const Config& c, int ndf, bool compound,
 
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
   std::vector<BuiltTable> tables;
+  AlbedoMemo memo;
   for (const Material& m : c.materials)
     for (int ndf : {0, 1})
-      for (bool compound : {false, true}) tables.push_back(build_one(m, c, ndf, compound, ctx));
+      for (bool compound : {false, true}) tables.push_back(build_one(m, c, ndf, compound, ctx, memo));
   return tables;
 }
 
@@ -133,9 +161,9 @@ Config test_config() {
   Config c;
   c.materials = {{"test_a", 0.3, 0.5, 0.2, 0.5, 2.0}};
   c.mu_lo = 0.05;
-  c.mu_step = 1.0 / 8;
+  c.mu_step = 1.0 / 24;
   c.mu_scale = 0.2;
-  c.error_points = 8;
+  c.error_points = 64;  // the error is local (grazing): enough samples for a stable maximum
   return c;
 }
 

@@ -19,13 +19,13 @@
 using namespace brdftab::numerics;
 
 namespace {
-// Gulbrandsen 2014 Eq. 1-2 as printed (unfactored): the independent reference where it does
-// not cancel (g not tiny, r not near 1).
-ComplexIndex gulbrandsen_textbook(double r, double g) {
-  const double s = std::sqrt(r);
-  const double n = g * (1 - r) / (1 + r) + (1 - g) * (1 + s) / (1 - s);
-  const double k2 = (r * (n + 1) * (n + 1) - (n - 1) * (n - 1)) / (1 - r);
-  return {n, std::sqrt(k2)};
+// Gulbrandsen 2014 Eq. 1-2 as printed (unfactored), in long double (64-bit mantissa): the
+// independent reference. Its k^2 cancels as g -> 0 (noise ~eps_ld n^2, k ~ 1e-9 at g = 0).
+ComplexIndex gulbrandsen_textbook(double r_d, double g_d) {
+  const long double r = r_d, g = g_d, s = std::sqrt(r);
+  const long double n = g * (1 - r) / (1 + r) + (1 - g) * (1 + s) / (1 - s);
+  const long double k2 = (r * (n + 1) * (n + 1) - (n - 1) * (n - 1)) / (1 - r);
+  return {static_cast<double>(n), static_cast<double>(std::sqrt(std::max(0.0L, k2)))};
 }
 double dielectric_eta(double r) { return (1 + std::sqrt(r)) / (1 - std::sqrt(r)); }
 }  // namespace
@@ -230,9 +230,10 @@ TEST_CASE("haze map: stress at the ends of the domain gives finite outputs and t
   CHECK(haze_map(0.0, 0.0, 0.01, 0.1, 5.0).beta == doctest::Approx(0.1 / (p + (1 - p) * 0.1)).epsilon(1e-14));
   CHECK(haze_map(0.0, 0.0, 0.01, 0.1, 5.0, true).beta == doctest::Approx(0.1 / (p + (1 - p) * 0.1)).epsilon(1e-14));
   // r -> 1 (r_c -> 1): 1 - r = (1 - r_c)(1 - beta_h) exactly, eta = (1 + sqrt r)^2 / (1 - r) finite.
-  const HazeOutput h = haze_map(1 - 1e-12, 0.0, 0.01, 0.5, 5.0);
-  CHECK(h.one_minus_r[0] == doctest::Approx(0.5e-12).epsilon(1e-4));
-  CHECK(h.eta[0] == doctest::Approx(4.0 / 0.5e-12).epsilon(1e-6));
+  const double rc = 1 - 1e-12, omr = 0.5 * (1 - rc);  // 1 - rc is exact (Sterbenz)
+  const HazeOutput h = haze_map(rc, 0.0, 0.01, 0.5, 5.0);
+  CHECK(h.one_minus_r[0] == doctest::Approx(omr).epsilon(1e-15));
+  CHECK(h.eta[0] == doctest::Approx((1 + std::sqrt(1 - omr)) * (1 + std::sqrt(1 - omr)) / omr).epsilon(1e-12));
 }
 
 TEST_CASE("haze map: bad input throws naming the parameter and domain") {
@@ -250,11 +251,15 @@ TEST_CASE("gulbrandsen: agrees with the textbook form and with the Fresnel F0 of
     for (double g : {0.0, 0.1, 0.5, 0.9, 1.0}) {
       const ComplexIndex a = gulbrandsen_nk(r, g);
       const ComplexIndex t = gulbrandsen_textbook(r, g);
-      worst_tb = std::max({worst_tb, std::abs(a.n - t.n) / t.n, std::abs(a.k - t.k) / std::max(1e-3, t.k)});
+      worst_tb = std::max(worst_tb, std::abs(a.n - t.n) / t.n);
+      if (t.k > 1e-3)
+        worst_tb = std::max(worst_tb, std::abs(a.k - t.k) / t.k);
+      else
+        CHECK(std::abs(a.k - t.k) < 1e-8);  // the reference's own noise at g = 0
       worst_f0 = std::max(worst_f0, std::abs(fresnel_conductor_f0(a.n, a.k) - r) / r);
     }
   MESSAGE("textbook " << worst_tb << ", F0 " << worst_f0);
-  CHECK(worst_tb < 1e-9);  // the textbook k^2 cancels at g -> 0 (~eps n^2 / k^2)
+  CHECK(worst_tb < 1e-14);
   CHECK(worst_f0 < 1e-13);
   // g = 0: the dielectric of footnote (Sec. 2.2), k = 0 exactly.
   CHECK(gulbrandsen_nk(0.04, 0.0).n == doctest::Approx(1.5).epsilon(1e-14));
@@ -270,10 +275,12 @@ TEST_CASE("gulbrandsen: round trip (r, g) -> (n, k) -> (r, g) over the domain") 
     const double g = i % 10 == 0 ? 0.0 : (i % 10 == 1 ? 1.0 : U(rng));
     const ComplexIndex nk = gulbrandsen_nk(r, g);
     const ReflectivityTint back = gulbrandsen_rg(nk.n, nk.k);
-    worst_r = std::max(worst_r, std::abs(back.r - r) / r);
+    // r(n) near n = 1 is ill-conditioned: n - 1 ~ 2 sqrt(r) carries the rounding eps n of n,
+    // so |dr| ~ eps sqrt(r) is the best possible; measured against that.
+    worst_r = std::max(worst_r, std::abs(back.r - r) / (std::numeric_limits<double>::epsilon() * (std::sqrt(r) + r)));
     worst_g = std::max(worst_g, std::abs(back.g - g));
   }
-  MESSAGE("round trip: worst relative r " << worst_r << ", worst absolute g " << worst_g);
-  CHECK(worst_r < 1e-12);
+  MESSAGE("round trip: worst |dr| / (eps (sqrt r + r)) " << worst_r << ", worst absolute g " << worst_g);
+  CHECK(worst_r < 16);
   CHECK(worst_g < 1e-8);
 }

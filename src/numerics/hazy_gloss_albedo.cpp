@@ -8,6 +8,7 @@
 
 #include "numerics/domain_check.hpp"
 #include "numerics/fresnel_conductor.hpp"
+#include "numerics/fresnel_dielectric.hpp"
 #include "numerics/fresnel_schlick.hpp"
 #include "numerics/microfacet_albedo.hpp"
 #include "numerics/microfacet_albedo_integrator.hpp"
@@ -23,7 +24,7 @@ void check(const HazyGlossComposite& c) {
   require_closed("alpha_w", c.alpha_w, 1e-3, 10.0, "[1e-3, 10]");
   require_closed("beta", c.beta, 0.0, 1.0, "[0, 1]");
   if (c.fresnel == HazeFresnel::exact) {
-    require_closed("eta", c.eta, 0.0, kFresnelNkMax, "[0, 1e50]");
+    require_open_closed("eta", c.eta, 0.0, kFresnelNkMax, "(0, 1e50]");
     require_closed("kappa", c.kappa, 0.0, kFresnelNkMax, "[0, 1e50]");
   }
   if (c.fresnel == HazeFresnel::schlick) require_closed("r", c.r, 0.0, 1.0, "[0, 1]");
@@ -32,7 +33,8 @@ void check(const HazyGlossComposite& c) {
 double fresnel_of(const HazyGlossComposite& c, double cos_d) {
   switch (c.fresnel) {
     case HazeFresnel::one: return 1.0;
-    case HazeFresnel::exact: return (c.eta == 1.0 && c.kappa == 0.0) ? 0.0 : fresnel_conductor(c.eta, c.kappa, cos_d);
+    // kappa = 0 (g = 0, the dielectric): the real-index form, ~4x cheaper than the complex one.
+    case HazeFresnel::exact: return c.kappa == 0.0 ? fresnel_dielectric(c.eta, cos_d) : fresnel_conductor(c.eta, c.kappa, cos_d);
     case HazeFresnel::schlick: return fresnel_schlick(c.r, cos_d);
   }
   return 1.0;
