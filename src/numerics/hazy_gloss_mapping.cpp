@@ -115,10 +115,10 @@ HazeOutput haze_map(const HazeInput& in) {
     throw_domain_error("channels", in.channels, "{1, 3}");
   const int nc = in.channels;
   double r_c_hat = 0.0;
+  const auto suffix = [nc](int i) { return nc == 1 ? std::string() : "[" + std::to_string(i) + "]"; };
   for (int i = 0; i < nc; ++i) {
-    const std::string suffix = nc == 1 ? "" : "[" + std::to_string(i) + "]";
-    if (!(in.r_c[i] >= 0.0 && in.r_c[i] < 1.0)) throw_domain_error("r_c" + suffix, in.r_c[i], "[0, 1)");
-    require_closed("g" + suffix, in.g[i], 0.0, 1.0, "[0, 1]");
+    if (!(in.r_c[i] >= 0.0 && in.r_c[i] < 1.0)) throw_domain_error("r_c" + suffix(i), in.r_c[i], "[0, 1)");
+    if (!(in.g[i] >= 0.0 && in.g[i] <= 1.0)) throw_domain_error("g" + suffix(i), in.g[i], "[0, 1]");
     r_c_hat = std::max(r_c_hat, in.r_c[i]);  // ||r_c||_inf
   }
   if (!(in.beta_h >= 0.0 && in.beta_h < 1.0)) throw_domain_error("beta_h", in.beta_h, "[0, 1)");
