@@ -16,4 +16,5 @@
   X(ls)                     \
   X(fresnel)                \
   X(microfacet_albedo)      \
-  X(htsg)
+  X(htsg)                   \
+  X(hazy_gloss)

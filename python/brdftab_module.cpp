@@ -67,7 +67,11 @@ py::dict evaluate(const cli::Quantity& q, const std::string& method, const std::
   py::module_ np = py::module_::import("numpy");
   py::list arrays;
   for (const auto& p : q.parameters) {
-    if (!kwargs.contains(p.name.c_str())) throw py::value_error(q.name + ": missing column '" + p.name + "'");
+    if (!kwargs.contains(p.name.c_str())) {
+      if (!p.fallback) throw py::value_error(q.name + ": missing column '" + p.name + "'");
+      arrays.append(np.attr("asarray")(*p.fallback, "float64"));  // optional column: its fallback
+      continue;
+    }
     arrays.append(np.attr("asarray")(kwargs[p.name.c_str()], "float64"));
   }
   const py::tuple b = np.attr("broadcast_arrays")(*arrays);
@@ -167,7 +171,9 @@ PYBIND11_MODULE(brdftab, m) {
   }, "names of the eval quantities");
   for (const auto& q : cli::all_quantities()) {
     std::vector<std::string> cols, methods;
-    for (const auto& p : q.parameters) cols.push_back(p.name + " in " + p.domain);
+    for (const auto& p : q.parameters)
+      cols.push_back(p.name + " in " + p.domain +
+                     (p.fallback ? " (optional, default " + lookup::format_number(*p.fallback) + ")" : ""));
     for (const auto& [k, v] : q.methods) methods.push_back(k);
     const std::string doc = q.description + "\n\ncolumns: " + join(cols) + "\nreturns: dict of " + join(q.outputs) +
                             "\nmethods: " + join(methods);

@@ -232,10 +232,16 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
       err << what << ": header (line 1): column '" << header[c] << "' appears twice\n";
       return 2;
     }
+  // column_of[i] = kAbsent: an optional parameter without a column (its fallback is used).
+  constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
   std::vector<std::size_t> column_of(np);
   std::vector<int> param_of_column(ncol, -1);
   for (std::size_t i = 0; i < np; ++i) {
     const auto it = column_by_name.find(q->parameters[i].name);
+    if (it == column_by_name.end() && q->parameters[i].fallback) {
+      column_of[i] = kAbsent;
+      continue;
+    }
     if (it == column_by_name.end()) {
       err << what << ": header (line 1): missing column '" << q->parameters[i].name
           << "' (this quantity needs columns " << list(param_names) << "; got " << list(header) << ")\n";
@@ -284,6 +290,10 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
         double* v = ch.inputs.data() + r * np;
         for (std::size_t i = 0; i < np && problem.empty(); ++i) {
           const Parameter& p = q->parameters[i];
+          if (column_of[i] == kAbsent) {
+            v[i] = *p.fallback;
+            continue;
+          }
           const std::string& cell = cells[column_of[i]];
           const auto value = parse_number(cell);
           const std::string why = value ? domain_problem(p, *value) : "is not a number";

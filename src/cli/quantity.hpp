@@ -3,6 +3,7 @@
 // domains), their results (output columns) and the methods that compute them.
 #include <functional>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -19,6 +20,8 @@ struct Parameter {
   bool lo_open = false, hi_open = false;
   bool integer = false;       // must be an integer value
   std::string domain;         // as printed in errors, e.g. "[0, 1]" or "{0, 1, 2}"
+  // An optional column: its value when the input has no such column (absent: required).
+  std::optional<double> fallback = std::nullopt;
 };
 
 struct EvalContext {

@@ -185,6 +185,16 @@ constexpr AttributeRule kDatasetRules[] = {
     {"material", Kind::text, 0, 0, false},
     {"B", Kind::number, 0, 1e12, true},
     {"c", Kind::number, 1, 1e12, false},
+    // hazy_gloss: the material's perceptual parameters and their haze mapping
+    {"haze_r_c", Kind::number, 0, 1, false},
+    {"haze_g", Kind::number, 0, 1, false},
+    {"haze_alpha_n", Kind::number, 0, 1e3, true},
+    {"haze_beta_h", Kind::number, 0, 1, false},
+    {"haze_lambda_h", Kind::number, 0, 1e3, false},
+    {"haze_beta", Kind::number, 0, 1, false},
+    {"haze_alpha_w", Kind::number, 0, 1e3, true},
+    {"haze_eta", Kind::number, 0, 1e50, false},
+    {"haze_kappa", Kind::number, 0, 1e50, false},
 };
 constexpr AttributeRule kFileRules[] = {
     {"schema_version", Kind::integer, 0, 0, false},

@@ -11,93 +11,17 @@
 
 #include "numerics/domain_check.hpp"
 #include "numerics/gauss_legendre.hpp"
+#include "numerics/microfacet_albedo_integrator.hpp"
 
 namespace brdftab::numerics {
 
 namespace {
 constexpr double kPi = boost::math::constants::pi<double>();
-using GK = boost::math::quadrature::gauss_kronrod<double, 21>;
-
-// Sorted, de-duplicated knots in [lo, hi] including both ends.
-std::vector<double> knots_in(std::vector<double> k, double lo, double hi) {
-  k.push_back(lo);
-  k.push_back(hi);
-  std::vector<double> out;
-  for (double x : k)
-    if (x >= lo && x <= hi) out.push_back(x);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
-
-// Adaptive Gauss-Kronrod of a vector-valued integrand (N components). A panel is accepted
-// when the Kronrod-Gauss difference of every component is below tol_density * width (so
-// the total is below tol_density * total length however deep the bisection goes) or below
-// the panel's rounding floor 100 eps Integral |f| (at most depth 14).
-template <std::size_t N, class F>
-void gk_vec(const F& f, double a, double b, double tol_density, int depth, std::array<double, N>& acc) {
-  const auto& xk = GK::abscissa();
-  const auto& wk = GK::weights();
-  const auto& wg = boost::math::quadrature::gauss<double, 10>::weights();
-  const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-  std::array<double, N> sk{}, sg{};
-  double l1 = 0.0;  // Integral of max_q |f_q| on the panel (Kronrod rule): the rounding floor
-  for (std::size_t j = 0; j < xk.size(); ++j) {
-    const bool gauss_node = (j % 2 == 1);  // the 10-point Gauss nodes are the odd Kronrod indices
-    const auto add = [&](double x) {
-      const std::array<double, N> v = f(x);
-      double vmax = 0.0;
-      for (std::size_t q = 0; q < N; ++q) vmax = std::max(vmax, std::abs(v[q]));
-      l1 += wk[j] * vmax;
-      for (std::size_t q = 0; q < N; ++q) {
-        sk[q] += wk[j] * v[q];
-        if (gauss_node) sg[q] += wg[j / 2] * v[q];
-      }
-    };
-    if (j == 0) {
-      add(c);
-    } else {
-      add(c + h * xk[j]);
-      add(c - h * xk[j]);
-    }
-  }
-  double err = 0.0;
-  for (std::size_t q = 0; q < N; ++q) err = std::max(err, std::abs(h * (sk[q] - sg[q])));
-  // Accept at the requested density or at the rounding floor of this panel's own values
-  // (a narrow high peak carries rounding noise ~eps * peak that no bisection removes).
-  if (err <= tol_density * (b - a) || err <= 100.0 * std::numeric_limits<double>::epsilon() * h * l1 || depth >= 14) {
-    for (std::size_t q = 0; q < N; ++q) acc[q] += h * sk[q];
-    return;
-  }
-  gk_vec<N>(f, a, c, tol_density, depth + 1, acc);
-  gk_vec<N>(f, c, b, tol_density, depth + 1, acc);
-}
-
-// Over the panels of a knot list: a first non-adaptive pass gives the magnitude M (largest
-// component), then every panel is refined to rel_tol * M in total.
-// A known magnitude (scale > 0) skips the first pass.
-template <std::size_t N, class F>
-std::array<double, N> integrate_panels(const F& f, const std::vector<double>& knots, double rel_tol, double scale = 0.0) {
-  double m = scale;
-  if (m <= 0.0) {
-    std::array<double, N> rough{};
-    for (std::size_t i = 0; i + 1 < knots.size(); ++i) gk_vec<N>(f, knots[i], knots[i + 1], 1e300, 14, rough);
-    for (double v : rough) m = std::max(m, std::abs(v));
-    if (m == 0.0) return rough;
-  }
-  const double length = knots.back() - knots.front();
-  std::array<double, N> acc{};
-  for (std::size_t i = 0; i + 1 < knots.size(); ++i) gk_vec<N>(f, knots[i], knots[i + 1], rel_tol * m / length, 0, acc);
-  return acc;
-}
-
-// Geometric knots around x0 at distances w * 4^k (k = -2..8) on the side(s) requested.
-void add_graded(std::vector<double>& k, double x0, double w, bool below, bool above) {
-  for (double d = w / 16.0; d < 4.0; d *= 4.0) {
-    if (below) k.push_back(x0 - d);
-    if (above) k.push_back(x0 + d);
-  }
-}
+// The adaptive Gauss-Kronrod panels, knots and grading are shared with every microfacet
+// albedo integral (numerics/microfacet_albedo_integrator.hpp).
+using albedo_integrator::add_graded;
+using albedo_integrator::integrate_panels;
+using albedo_integrator::knots_in;
 
 // Integral_0^pi f(psi) dpsi of an even, 2 pi-periodic integrand given as f(sin^2(psi/2)),
 // peaked at psi = 0 with half-width ~lambda in tan(psi/2). The Moebius map

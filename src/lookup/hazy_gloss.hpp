@@ -1,0 +1,27 @@
+#pragma once
+// Runtime lookup of the per-material hazy-gloss albedo tables of tables/hazy_gloss.h5 (schema
+// in lookup/hazy_gloss_schema.hpp). The exact value is numerics::hazy_gloss_albedo.
+//
+//   const brdftab::lookup::HazyGlossAlbedoTable t(
+//       tables.table("hazy_gloss.h5", "hazy_gloss_albedo_ggx_patch_probe_a"));
+//   double a = hazy_gloss_albedo(t, 0.5);
+#include "lookup/hazy_gloss_schema.hpp"
+#include "lookup/table.hpp"
+
+namespace brdftab::lookup {
+
+class HazyGlossAlbedoTable {
+ public:
+  HazyGlossAlbedoTable(const Table& t, const schema::DatasetSchema& d) : t_(&t) { schema::check_table(t, d); }
+  const Table& table() const { return *t_; }
+
+ private:
+  const Table* t_;
+};
+
+// A(mu); outside the table's mu range: clamp (policy clamp) or DomainError naming mu.
+inline double hazy_gloss_albedo(const HazyGlossAlbedoTable& t, double mu, OutOfDomain policy = OutOfDomain::clamp) {
+  return t.table().eval1(mu, policy);
+}
+
+}  // namespace brdftab::lookup
