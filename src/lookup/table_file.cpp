@@ -185,6 +185,8 @@ constexpr AttributeRule kDatasetRules[] = {
     {"material", Kind::text, 0, 0, false},
     {"B", Kind::number, 0, 1e12, true},
     {"c", Kind::number, 1, 1e12, false},
+    // hp: the material parameters (numerics::hp_material_text)
+    {"hp_material", Kind::text, 0, 0, false},
 };
 constexpr AttributeRule kFileRules[] = {
     {"schema_version", Kind::integer, 0, 0, false},

@@ -1,0 +1,45 @@
+#pragma once
+// Runtime lookup of the per-material directional albedo of the Holzschuch-Pacanowski BRDF
+// from tables/hp.h5 (schema in lookup/hp_schema.hpp). The exact value is
+// numerics::hp_albedo(HpBrdf(material, HpExactIngredients(material)), theta_i).
+//
+//   const brdftab::lookup::HpAlbedoMaterial nickel(tables, "hp.h5", "nickel_g");
+//   brdftab::lookup::HpAlbedoParts a = nickel(0.3);   // a.reflection, a.diffraction, a.layer, a.total()
+#include <string>
+
+#include "lookup/hp_schema.hpp"
+#include "lookup/table_set.hpp"
+
+namespace brdftab::lookup {
+
+struct HpAlbedoParts {
+  double reflection = 0, diffraction = 0, layer = 0;
+  double total() const { return reflection + diffraction + layer; }
+};
+
+class HpAlbedoMaterial {
+ public:
+  // Loads the three tables of `material`; throws (naming the dataset) if one is missing or
+  // does not match the schema.
+  HpAlbedoMaterial(TableSet& tables, const std::string& file, const std::string& material)
+      : r_(&load(tables, file, schema::hp::kReflection, material)),
+        d_(&load(tables, file, schema::hp::kDiffraction, material)),
+        l_(&load(tables, file, schema::hp::kLayer, material)) {}
+  // theta_i in radians within the table's range (clamped by default).
+  HpAlbedoParts operator()(double theta_i, OutOfDomain policy = OutOfDomain::clamp) const {
+    return {r_->table.eval1(theta_i, policy), d_->table.eval1(theta_i, policy), l_->table.eval1(theta_i, policy)};
+  }
+  // The `hp_material` attribute of the tables (the material's parameters).
+  std::string material_text() const { return r_->info.attribute_string("hp_material"); }
+
+ private:
+  static const LoadedTable& load(TableSet& tables, const std::string& file, const schema::DatasetSchema& s,
+                                 const std::string& material) {
+    const LoadedTable& t = tables.get(file, std::string(s.name) + material);
+    schema::check_table(t.table, t.info.attribute_string("quantity"), s);
+    return t;
+  }
+  const LoadedTable *r_, *d_, *l_;
+};
+
+}  // namespace brdftab::lookup
