@@ -1,11 +1,13 @@
 // Table family hp: per-material directional albedo of the Holzschuch-Pacanowski BRDF.
 //   { "materials": [{"name": "nickel_g", "lambda_um": 0.526, "sigma_s_um": 0.1, "beta": 0.05, "p": 0.6,
 //                    "b_um": 5, "c": 2, "n": 1.97, "k": 3.72, "layer": "none", "albedo": 0}, ...],
-//     "theta_points": 41, "tol": 1e-7, "error_points": 24, "precision": "float64" }
+//     "mu_points": 41, "tol": 1e-7, "error_points": 24, "precision": "float64" }
 // Each material gives hp_albedo_{reflection,diffraction,layer}_<name> on theta_i in [0, pi/2].
 #include "generators/hp.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <regex>
 #include <set>
@@ -85,7 +87,7 @@ Config read_config(const nlohmann::json& entry) {
       c.materials.push_back(mat);
     }
   }
-  c.theta_points = static_cast<int>(r.integer("theta_points", c.theta_points, 4, 100000));
+  c.mu_points = static_cast<int>(r.integer("mu_points", c.mu_points, 4, 100000));
   c.tol = r.number("tol", c.tol, 1e-12, 1e-2);
   c.error_points = static_cast<int>(r.integer("error_points", c.error_points, 1, 100000));
   c.storage = r.choice("precision", "float64", {"float32", "float64"}) == "float32" ? lookup::Storage::float32
@@ -111,7 +113,7 @@ nlohmann::json to_json(const Config& c) {
                     {"albedo", m.albedo}});
   }
   return {{"materials", list},
-          {"theta_points", c.theta_points},
+          {"mu_points", c.mu_points},
           {"tol", c.tol},
           {"error_points", c.error_points},
           {"precision", std::string(lookup::storage_name(c.storage))}};
@@ -121,32 +123,39 @@ std::vector<BuiltTable> build_material(const Material& mm, const Config& c, cons
   std::vector<BuiltTable> out;
   const numerics::HpMaterial m = mm.m;
   const double tol = c.tol;
+  // One set of exact ingredients per material, shared by all rows (its G1 interpolant is
+  // built once, thread-safely).
+  struct Shared {
+    numerics::HpExactIngredients ing;
+    numerics::HpBrdf brdf;
+    explicit Shared(const numerics::HpMaterial& mat) : ing(mat), brdf(mat, ing) {}
+  };
+  const auto shared = std::make_shared<Shared>(m);
+  const std::shared_ptr<const numerics::HpBrdf> f(shared, &shared->brdf);
   const schema::DatasetSchema* schemas[3] = {&sc::kReflection, &sc::kDiffraction, &sc::kLayer};
   for (int part = 0; part < 3; ++part) {
     TableSpec spec;
     spec.dataset = std::string(schemas[part]->name) + mm.name;
     spec.quantity = std::string(schemas[part]->quantity) + mm.name + "' (" + numerics::hp_material_text(m) + ")";
-    spec.axes = {axis_spec(sc::kThetaI, 0.0, std::numbers::pi / 2, c.theta_points)};
+    spec.axes = {axis_spec(sc::kCosThetaI, 0.0, 1.0, c.mu_points)};
     spec.storage = c.storage;
     spec.interpolation = lookup::Interpolation::cubic;
-    spec.domain = "theta_i in [0, pi/2]";
+    spec.domain = "cos(theta_i) in [0, 1]";
     spec.method = kMethod;
     spec.generator = "hp";
     spec.error_rows = 1;
     spec.error_per_row = c.error_points;
-    const RowFunction row = pointwise_parallel_row([m, tol, part](double theta_i) {
-      const numerics::HpExactIngredients ing(m);
-      const numerics::HpBrdf f(m, ing);
-      const numerics::HpIncident in = f.incident(theta_i);
-      if (part == 0) return numerics::hp_albedo_reflection(f, in, tol);
-      if (part == 1) return numerics::hp_albedo_diffraction(f, in, tol);
-      return numerics::hp_albedo_layer(f, in, tol);
+    const RowFunction row = pointwise_parallel_row([f, tol, part](double mu) {
+      const numerics::HpIncident in = f->incident(std::acos(std::clamp(mu, 0.0, 1.0)));
+      if (part == 0) return numerics::hp_albedo_reflection(*f, in, tol);
+      if (part == 1) return numerics::hp_albedo_diffraction(*f, in, tol);
+      return numerics::hp_albedo_layer(*f, in, tol);
     });
     BuiltTable t = build_table(spec, row, ctx);
     t.dataset.attributes["source"] = kSource;
     t.dataset.attributes["material"] = mm.name;
     t.dataset.attributes["hp_material"] = numerics::hp_material_text(m);
-    t.dataset.attributes["lookup"] = "albedo = table(theta_i); see lookup::HpAlbedoMaterial";
+    t.dataset.attributes["lookup"] = "albedo = table(cos(theta_i)); see lookup::HpAlbedoMaterial";
     out.push_back(std::move(t));
   }
   return out;
@@ -162,14 +171,14 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
 Config test_config() {
   Config c;
   c.materials = {{"test_plastic", make(0.526, 0.05, 0.3, 1.0, 2.0, 2.5, 1.5, 0, HpLayer::plastic, 0.5)}};
-  c.theta_points = 9;
+  c.mu_points = 9;
   c.tol = 1e-5;
   c.error_points = 8;
   return c;
 }
 
 Config narrowed(Config c) {
-  c.theta_points = std::max(4, c.theta_points / 2);
+  c.mu_points = std::max(4, c.mu_points / 2);
   return c;
 }
 

@@ -31,7 +31,7 @@ std::vector<Material> default_materials();
 
 struct Config {
   std::vector<Material> materials = default_materials();
-  int theta_points = 41;   // on [0, pi/2]
+  int mu_points = 41;      // on cos(theta_i) in [0, 1]
   double tol = 1e-7;       // quadrature tolerance of the exact albedo
   int error_points = 24;   // off-grid error samples per table
   lookup::Storage storage = lookup::Storage::float64;

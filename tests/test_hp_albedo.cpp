@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <algorithm>
 
 #include "numerics/fresnel_conductor.hpp"
 #include "numerics/gauss_legendre.hpp"
@@ -129,12 +131,14 @@ TEST_CASE("hp corrected plastic: a white base under a smooth coat conserves ener
       const HpAlbedo ac = hp_albedo(c, ti), ap = hp_albedo(p, ti);
       CHECK(ac.layer == doctest::Approx(1 - Fi).epsilon(1e-13));
       CHECK(ac.total() == doctest::Approx(1.0).epsilon(1e-4));
-      CHECK(ap.total() > 1.02);
+      CHECK(ap.total() > 1.05);
     }
   }
 }
 
 TEST_CASE("hp albedo is 0 at grazing incidence and finite non-negative across the parameter space") {
+  // The total may exceed 1 (Q/2 of Eq. 27 exceeds 1 near grazing, see the Eq. 27 test in
+  // test_hp_brdf.cpp); the reflection lobe alone cannot (F <= 1, G <= 1, D normalized).
   for (double beta : {1e-3, 0.3, 3.0})
     for (double p : {0.3, 3.0})
       for (double B : {0.1, 30.0}) {
@@ -149,6 +153,24 @@ TEST_CASE("hp albedo is 0 at grazing incidence and finite non-negative across th
         CHECK(g.total() == 0.0);
         const HpAlbedo a = hp_albedo(f, 0.4, 1e-5);
         CHECK((std::isfinite(a.total()) && a.reflection >= 0 && a.diffraction >= 0));
-        CHECK(a.total() < 1.0);
+        CHECK(a.reflection < 1.0);
       }
+}
+
+TEST_CASE("hp exact ingredients: the quadrature G1 interpolant is within 1e-9 of the exact G1") {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (double p : {0.1, 0.6, 1.0, 3.0, 10.0})
+    for (double beta : {1e-3, 0.2, 5.0}) {
+      HpMaterial m = rough();
+      m.p = p;
+      m.beta = beta;
+      const HpExactIngredients ing(m);
+      double worst = 0;
+      for (int k = 0; k < 40; ++k) {
+        const double mu = k < 4 ? std::pow(10.0, -4.0 * k) : (k < 8 ? 1 - std::pow(10.0, -2.0 * k + 6) : U(rng));
+        worst = std::max(worst, std::abs(ing.g1_quadrature(mu) - ing.g1(mu)));
+      }
+      CHECK(worst < 1e-9);
+    }
 }

@@ -42,6 +42,14 @@ TEST_CASE("hp Q of Eq. 27 is 2F at the mirror direction, for real and complex et
   }
 }
 
+TEST_CASE("hp Q of Eq. 27 at grazing backscatter is 1 + (2 eta^2 - 1)^2, so Q/2 is not bounded by 1") {
+  // theta_i = theta_o = pi/2, phi_q = pi: Q_ss = -1, Q_sp = Q_ps = 0, Q_pp = -(2 eta^2 - 1) (by hand from Eq. 27).
+  for (double n : {1.2, 1.5, 2.5}) {
+    const double e = 2 * n * n - 1;
+    CHECK(hp_q_eq27({n, 0.0}, 0.0, 0.0, kPi) == doctest::Approx(1 + e * e).epsilon(1e-12));
+  }
+}
+
 TEST_CASE("hp Q of Eq. 27 is symmetric in i and o (reciprocity of the colour term)") {
   for (double ti : {0.1, 0.7, 1.3})
     for (double to : {0.2, 0.9, 1.4})

@@ -5,6 +5,7 @@
 //
 //   const brdftab::lookup::HpAlbedoMaterial nickel(tables, "hp.h5", "nickel_g");
 //   brdftab::lookup::HpAlbedoParts a = nickel(0.3);   // a.reflection, a.diffraction, a.layer, a.total()
+#include <cmath>
 #include <string>
 
 #include "lookup/hp_schema.hpp"
@@ -25,9 +26,13 @@ class HpAlbedoMaterial {
       : r_(&load(tables, file, schema::hp::kReflection, material)),
         d_(&load(tables, file, schema::hp::kDiffraction, material)),
         l_(&load(tables, file, schema::hp::kLayer, material)) {}
-  // theta_i in radians within the table's range (clamped by default).
+  // theta_i in radians, [0, pi/2] (the tables hold cos(theta_i) in [0, 1]).
   HpAlbedoParts operator()(double theta_i, OutOfDomain policy = OutOfDomain::clamp) const {
-    return {r_->table.eval1(theta_i, policy), d_->table.eval1(theta_i, policy), l_->table.eval1(theta_i, policy)};
+    return at_cos(std::cos(theta_i), policy);
+  }
+  HpAlbedoParts at_cos(double cos_theta_i, OutOfDomain policy = OutOfDomain::clamp) const {
+    const double m = cos_theta_i < 1e-15 ? 0.0 : cos_theta_i;  // cos(pi/2) = 6e-17
+    return {r_->table.eval1(m, policy), d_->table.eval1(m, policy), l_->table.eval1(m, policy)};
   }
   // The `hp_material` attribute of the tables (the material's parameters).
   std::string material_text() const { return r_->info.attribute_string("hp_material"); }

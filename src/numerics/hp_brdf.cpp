@@ -30,21 +30,19 @@ HpExactIngredients::HpExactIngredients(const HpMaterial& m)
 
 double HpExactIngredients::g1_quadrature(double mu) const {
   constexpr int kIntervals = 4096;
+  constexpr double kLogALo = -6 * 2.302585092994046, kLogAHi = 6 * 2.302585092994046;  // a in [1e-6, 1e6]
+  constexpr double kStep = (kLogAHi - kLogALo) / kIntervals;
   std::call_once(once_, [this] {
     grid_.resize(kIntervals + 1);
-    for (int j = 0; j <= kIntervals; ++j) {
-      const double x = static_cast<double>(j) / kIntervals;
-      grid_[j] = j == kIntervals ? 0.0 : smith_gbeckmann_g1(x / (1 - x), p_);
-    }
+    for (int j = 0; j <= kIntervals; ++j) grid_[j] = smith_gbeckmann_g1(std::exp(kLogALo + j * kStep), p_);
   });
   if (!(mu > 0)) return 0.0;
   if (mu >= 1) return 1.0;
-  // x = a / (1 + a) with a = beta s / mu: x = beta s / (mu + beta s).
-  const double bs = beta_ * std::sqrt((1 - mu) * (1 + mu));
-  const double x = bs / (mu + bs);
-  const double u = x * kIntervals;
+  const double a = beta_ * std::sqrt((1 - mu) * (1 + mu)) / mu;
+  const double u = (std::log(a) - kLogALo) / kStep;
+  if (!(u >= 1 && u <= kIntervals - 1)) return smith_gbeckmann_g1(a, p_);  // outside: exact
   const int j = std::clamp(static_cast<int>(u) - 1, 0, kIntervals - 3);  // nodes j..j+3
-  const double t = u - j;  // in [0, 3]
+  const double t = u - j;  // in [1, 2]
   const double* g = &grid_[j];
   // 4-point Lagrange at nodes 0, 1, 2, 3.
   return g[0] * (-(t - 1) * (t - 2) * (t - 3) / 6) + g[1] * (t * (t - 2) * (t - 3) / 2) +

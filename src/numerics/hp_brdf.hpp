@@ -42,7 +42,7 @@ class HpIngredients {
   // G1 of the material's NDF for a direction with cos(theta) = mu in [0, 1] (Eq. 42).
   virtual double g1(double mu) const = 0;
   // The same for the inner loops of quadratures (albedo, Eq. 31), where one albedo needs
-  // ~10^4-10^5 values: may be a faster evaluation of the same function to <= 1e-10 absolute.
+  // ~10^4-10^5 values: may be a faster evaluation of the same function to <= 1e-9 absolute.
   virtual double g1_quadrature(double mu) const { return g1(mu); }
   // sigma_rel^2(B, c, s) of the material (Eq. 25), s = sin(theta_i) in [0, 1].
   virtual double sigma_rel2(double s) const = 0;
@@ -52,10 +52,11 @@ class HpIngredients {
 
 // The exact ingredients (no tables) for one material. g1 calls the exact Smith G1
 // (smith_gbeckmann_lambda.hpp, ~10 us); g1_quadrature interpolates, by 4-point Lagrange
-// on a uniform grid of 4097 exact values in x = a / (1 + a), a = beta tan(theta), built on
-// first use (~40 ms, thread-safe): G1 is smooth in x on [0, 1] (1 at x = 0; ~ (1-x) / (M1 x)
-// at x = 1), and the interpolation error, measured against the exact G1 at random points in
-// tests/test_hp_albedo.cpp, is below 1e-10 for p in [0.1, 10].
+// on a uniform grid of 4097 exact values in ln(a), a = beta tan(theta) in [1e-6, 1e6]
+// (exact outside), built on first use (~40 ms, thread-safe): G1 is smooth in ln(a) for every
+// p (in a = tan/(1+tan)-like variables it is not: at p = 0.1 it falls steeply near a = 0),
+// and the interpolation error, measured against the exact G1 at random points in
+// tests/test_hp_albedo.cpp, is below 1e-9 (measured 3.2e-10) for p in [0.1, 10].
 class HpExactIngredients final : public HpIngredients {
  public:
   explicit HpExactIngredients(const HpMaterial& m);
