@@ -17,4 +17,5 @@
   X(fresnel)                \
   X(microfacet_albedo)      \
   X(htsg)                   \
-  X(hazy_gloss)
+  X(hazy_gloss)             \
+  X(hp)

@@ -195,6 +195,8 @@ constexpr AttributeRule kDatasetRules[] = {
     {"haze_alpha_w", Kind::number, 0, 1e3, true},
     {"haze_eta", Kind::number, 0, 1e50, false},
     {"haze_kappa", Kind::number, 0, 1e50, false},
+    // hp: the material parameters (numerics::hp_material_text)
+    {"hp_material", Kind::text, 0, 0, false},
 };
 constexpr AttributeRule kFileRules[] = {
     {"schema_version", Kind::integer, 0, 0, false},

@@ -1,0 +1,26 @@
+#pragma once
+// Schema of the hp family (tables/hp.h5): per-material directional albedo of the
+// Holzschuch-Pacanowski BRDF (Holzschuch & Pacanowski, Sec. 4, Eq. 34-49; corrected form,
+// validate/ERRATA.md), one 1-D table on cos(theta_i) per material and per part. The material's
+// parameters are stored in the text attribute `hp_material` ("lambda_um=... sigma_s_um=...
+// beta=... p=... b_um=... c=... n=... k=... layer=... albedo=...").
+#include "lookup/schema.hpp"
+
+namespace brdftab::schema::hp {
+
+inline constexpr std::string_view kFile = "hp.h5";
+
+// cos(theta_i): the albedo varies fastest at grazing incidence (G1(theta_i) -> 0 linearly in
+// cos theta_i), where a theta_i axis spreads its points thinnest.
+inline constexpr AxisSchema kCosThetaI{"cos_theta_i", lookup::Transform::identity, "1"};
+inline constexpr DatasetSchema kReflection{"hp_albedo_reflection_", true,
+                                           "albedo of the reflection lobe (Eq. 35) of material '", 1, {kCosThetaI}};
+inline constexpr DatasetSchema kDiffraction{"hp_albedo_diffraction_", true,
+                                            "albedo of the diffraction lobe (Eq. 36-37, 43, 27) of material '", 1, {kCosThetaI}};
+inline constexpr DatasetSchema kLayer{"hp_albedo_layer_", true,
+                                      "albedo of the layer lobe (Eq. 44-49) of material '", 1, {kCosThetaI}};
+inline constexpr std::array kDatasets{kReflection, kDiffraction, kLayer};
+// The three parts in the order above.
+inline constexpr std::array<std::string_view, 3> kPartNames{"reflection", "diffraction", "layer"};
+
+}  // namespace brdftab::schema::hp
