@@ -14,4 +14,5 @@
   X(hfunc)                  \
   X(ghs_sigma_rel)           \
   X(ls)                     \
-  X(fresnel)
+  X(fresnel)               \
+  X(filip)

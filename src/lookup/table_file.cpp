@@ -185,6 +185,8 @@ constexpr AttributeRule kDatasetRules[] = {
     {"material", Kind::text, 0, 0, false},
     {"B", Kind::number, 0, 1e12, true},
     {"c", Kind::number, 1, 1e12, false},
+    // filip: the material's parameter set, "phi_a1=...,w1=...,..." (generators/filip.hpp)
+    {"filip_parameters", Kind::text, 0, 0, false},
 };
 constexpr AttributeRule kFileRules[] = {
     {"schema_version", Kind::integer, 0, 0, false},
