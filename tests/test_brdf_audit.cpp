@@ -3,7 +3,9 @@
 // independent microfacet albedo and a closed form, and models built to violate each check fail it.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <numbers>
 
 #include "cli_runner.hpp"
@@ -123,4 +125,31 @@ TEST_CASE("brdf audit CLI: table, exit status, bad input") {
   r = run_cli("audit filip");
   CHECK(r.status == 0);
   CHECK(contains(r.out, "finding"));
+}
+
+TEST_CASE("brdf audit: d'Eon's fast model (Eq. 48) reflects more than it receives at c = 1, grazing incidence") {
+  // Independent midpoint quadrature (400 x 400 in theta_o, phi_o) of Eq. 48 at theta_i = 89 deg.
+  const AuditableModel* m = find_auditable_model("ls_deon_fast");
+  REQUIRE(m);
+  const double c[1] = {1.0};
+  const BoundBrdf f = m->bind(c);
+  const double ti = 89 * kPi / 180;
+  const AuditVec wi{std::sin(ti), 0, std::cos(ti)};
+  double a = 0;
+  const int n = 400;
+  for (int i = 0; i < n; ++i) {
+    const double t = (i + 0.5) * (kPi / 2) / n;
+    for (int j = 0; j < n; ++j) {
+      const double p = (j + 0.5) * 2 * kPi / n;
+      a += f(wi, {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)}) * std::cos(t) * std::sin(t);
+    }
+  }
+  a *= (kPi / 2 / n) * (2 * kPi / n);
+  MESSAGE("Eq. 48 albedo at c = 1, theta_i = 89 deg: " << a);
+  CHECK(a > 1.2);
+  CHECK(a == doctest::Approx(audit_directional_albedo(f, wi, 16, 16)).epsilon(1e-3));
+  const auto r = run_cli("audit ls_deon_fast --params c=1");
+  CHECK(r.status == 1);
+  CHECK(contains(r.out, "FAIL"));
+  CHECK(contains(r.err, "a check failed"));
 }

@@ -4,7 +4,9 @@
 // linearized prediction sigma sqrt(diag((J^T J)^-1)).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <numbers>
 #include <random>
 #include <vector>

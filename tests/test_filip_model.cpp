@@ -5,9 +5,11 @@
 // the domain errors, and the divergence of the albedo at grazing angles for alpha >= 2.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 #include "numerics/filip_cosine_integrals.hpp"
 #include "numerics/filip_stencil_model.hpp"
@@ -124,7 +126,7 @@ TEST_CASE("filip model: bad input names the parameter, value and domain") {
 TEST_CASE("filip model: finite up to the last double below pi/2 for moderate alpha, overflow throws") {
   const FilipParams p = filip_example_fabric();
   const double g = std::nextafter(kPi / 2, 0.0);
-  for (double po = 0; po < 6.3; po += 0.1) {
+  for (double po = 0; po < 6.28; po += 0.1) {
     const double f = filip_brdf(p, g, 0.3, g, po);
     CHECK(std::isfinite(f));
     CHECK(f >= 0);

@@ -52,13 +52,13 @@ class FilipBrdfTable {
   const Table* t_;
 };
 
-// f from the table (multilinear), azimuths any real; theta_i and theta_o beyond the table's range
+// f = exp(g) - kLogFloor from the table of g = ln(f + kLogFloor) (multilinear), azimuths any real; theta_i and theta_o beyond the table's range
 // follow `policy` (clamp: the nearest edge).
 inline double filip_brdf(const FilipBrdfTable& t, double theta_i, double phi_i, double theta_o, double phi_o,
                          OutOfDomain policy = OutOfDomain::clamp) {
   filip_detail::reduce_azimuths(phi_i, phi_o);
   const double x[4] = {theta_i, phi_i, theta_o, phi_o};
-  return t.table().eval(x, policy);
+  return std::max(0.0, std::exp(t.table().eval(x, policy)) - schema::filip::kLogFloor);
 }
 
 struct FilipSample {

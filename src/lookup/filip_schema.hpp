@@ -6,7 +6,10 @@
 // invariant under rotating both directions by pi: phi_i in [pi, 2 pi) maps to phi_i - pi,
 // phi_o - pi). Outgoing directions are covered for theta_o in [0, theta_max] (the model is
 // unbounded at grazing angles; directions beyond theta_max are never sampled).
-//   filip_brdf_<m>             f(theta_i, phi_i, theta_o, phi_o), multilinear (the model has kinks);
+//   filip_brdf_<m>             g = ln(f + kLogFloor) on (theta_i, phi_i, theta_o, phi_o), multilinear
+//                              (the model has kinks, and f spans orders of magnitude between normal
+//                              and grazing angles: interpolating ln f keeps the relative error
+//                              bounded; the stored errors are errors of ln f, i.e. relative errors);
 //   filip_albedo_<m>           A(theta_i, phi_i) = Integral_{theta_o <= theta_max} f cos theta_o d omega_o;
 //   filip_marginal_cdf_<m>     C(theta_i, phi_i, theta) = Integral_{theta_o <= theta} f cos d omega_o / A,
 //                              on the strip edges theta = k dtheta, dtheta = theta_max / (n - 1);
@@ -26,8 +29,11 @@ inline constexpr AxisSchema kThetaO{"theta_o", lookup::Transform::identity, "rad
 inline constexpr AxisSchema kPhiO{"phi_o", lookup::Transform::identity, "rad"};
 inline constexpr AxisSchema kThetaLo{"theta_o_lo", lookup::Transform::identity, "rad"};
 inline constexpr DatasetSchema kBrdf{
-    "filip_brdf_", true, "f(theta_i, phi_i, theta_o, phi_o) of the Filip et al. highlight-stencil BRDF, material '", 4,
+    "filip_brdf_", true,
+    "ln(f + 1e-10 /sr), f(theta_i, phi_i, theta_o, phi_o) of the Filip et al. highlight-stencil BRDF, material '", 4,
     {kThetaI, kPhiI, kThetaO, kPhiO}};
+// f = exp(g) - kLogFloor (1/sr): the floor keeps g finite where f = 0.
+inline constexpr double kLogFloor = 1e-10;
 inline constexpr DatasetSchema kAlbedo{
     "filip_albedo_", true, "A(theta_i, phi_i): albedo over theta_o <= theta_max of the Filip et al. BRDF, material '",
     2, {kThetaI, kPhiI}};

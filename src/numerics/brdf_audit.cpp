@@ -163,6 +163,18 @@ AuditCheck check_continuity(const AuditableModel& m, std::span<const double> par
   const int n_dirs = m.cost == AuditCost::slow ? 6 : 48;
   for (int k = 0; k < n_dirs; ++k)
     dirs.push_back({dir(80 * kDeg * u(rng), 2 * kPi * u(rng)), dir(80 * kDeg * u(rng), 2 * kPi * u(rng))});
+  // Scale: the largest |f| over the directions at the audited parameters, so that a parameter
+  // edge where f -> 0 (c = 0, m = 0) is not a relative jump of 1.
+  double scale = 0;
+  {
+    const BoundBrdf f0 = m.bind(params);
+    for (const auto& [a, b] : dirs) {
+      long threw = 0;
+      const double v = eval_or_inf(f0, a, b, threw);
+      if (std::isfinite(v)) scale = std::max(scale, std::abs(v));
+    }
+  }
+  if (!(scale > 0)) scale = 1;
   double worst = 0;
   std::string where;
   int edges = 0, skipped = 0;
@@ -171,7 +183,7 @@ AuditCheck check_continuity(const AuditableModel& m, std::span<const double> par
     for (int side = 0; side < 2; ++side) {
       const double edge = side == 0 ? p.lo : p.hi;
       if (!std::isfinite(edge)) continue;
-      const double step = 1e-9 * std::max(1.0, std::abs(edge)) * (side == 0 ? 1 : -1);
+      const double step = 1e-10 * std::max(1.0, std::abs(edge)) * (side == 0 ? 1 : -1);
       const bool open = side == 0 ? p.lo_open : p.hi_open;
       const double at = open ? edge + step * 1e-3 : edge, inside = at + step;
       std::vector<double> pa(params.begin(), params.end()), pb = pa;
@@ -189,8 +201,7 @@ AuditCheck check_continuity(const AuditableModel& m, std::span<const double> par
         long threw = 0;
         const double va = eval_or_inf(fa, a, b, threw), vb = eval_or_inf(fb, a, b, threw);
         if (!std::isfinite(va) || !std::isfinite(vb)) continue;
-        const double scale = std::max({std::abs(va), std::abs(vb), 1e-12});
-        const double rel = std::abs(va - vb) / scale;
+        const double rel = std::abs(va - vb) / std::max({scale, std::abs(va), std::abs(vb)});
         if (rel > worst) {
           worst = rel;
           where = p.name + " = " + num(at);
@@ -200,9 +211,9 @@ AuditCheck check_continuity(const AuditableModel& m, std::span<const double> par
   }
   AuditCheck c;
   c.name = "continuity at parameter edges";
-  c.measured = "max rel. jump " + num(worst) + " over " + std::to_string(edges) + " edges (" +
+  c.measured = "max jump / max f " + num(worst) + " over " + std::to_string(edges) + " edges (" +
                std::to_string(skipped) + " excluded by joint constraints)" + (where.empty() ? "" : " at " + where);
-  c.tolerance = num(o.continuity_tolerance) + " for a 1e-9 rel. step";
+  c.tolerance = num(o.continuity_tolerance) + " of max f, step 1e-10";
   c.value = worst;
   if (worst > o.continuity_tolerance) c.verdict = AuditVerdict::fail;
   return c;

@@ -8,8 +8,9 @@
 //                                (a third of them grazing);
 //   directional albedo           A(omega_i) = Integral f cos theta_o d omega_o <= 1 (composite
 //                                Gauss-Legendre in theta_o and phi_o) for theta_i up to 89 degrees;
-//   continuity at parameter edges f at each finite end of each parameter's domain against f a
-//                                relative 1e-9 inside, over a set of directions (no jump).
+//   continuity at parameter edges f at each finite end of each parameter's domain against f
+//                                1e-10 max(1, |end|) inside, over a set of directions, relative to
+//                                the largest |f| there (a jump stays, a sqrt-type edge is 1e-5).
 // A model may declare that the paper's model does not conserve energy or is unbounded at grazing
 // angles: a violation of that check is then reported as a finding, not a failure.
 //
@@ -34,7 +35,7 @@ struct AuditParameter {
   std::string domain;  // as printed in errors, e.g. "[1e-3, 10]"
 };
 
-// f(omega_i, omega_o) for one bound parameter set.
+// f(omega_i, omega_o) for one bound parameter set. May memoize per-direction work: use one per thread.
 using BoundBrdf = std::function<double(const AuditVec& wi, const AuditVec& wo)>;
 
 enum class AuditCost { cheap, slow };  // slow: the audit uses coarse sweeps and quadrature
@@ -74,7 +75,7 @@ struct AuditOptions {
   int reciprocity_pairs = 3000;
   double reciprocity_tolerance = 1e-9;
   double albedo_tolerance = 2e-3;     // quadrature error allowance above 1
-  double continuity_tolerance = 1e-4; // relative jump allowed for a 1e-9 relative parameter step
+  double continuity_tolerance = 1e-4; // jump / max f allowed for a 1e-10 parameter step
   double negative_tolerance = 1e-14;  // f >= -tol * max f
 };
 

@@ -59,9 +59,25 @@ std::vector<AuditableModel> audit_models_ls() {
     m.parameters = {c_param()};
     m.bind = [](std::span<const double> p) -> BoundBrdf {
       LsHalfSpaceOptions opt;
-      opt.legendre_order = 32;  // coarse: the audit checks properties, not 1e-10 values
-      const auto hs = std::make_shared<const LsHalfSpace>(p[0], opt);
-      return [hs](const AuditVec& wi, const AuditVec& wo) { return hs->f(wi.z, wo.z, azimuth_difference(wi, wo)); };
+      // coarse (the audit checks properties, not 1e-10 values): Legendre order 32, 5 panels of 8
+      // discrete-ordinate points, modes to 1e-8 of f_0
+      opt.legendre_order = 32;
+      opt.solver.points = 8;
+      opt.solver.panels = 5;
+      opt.solver.top_points = 24;
+      opt.mode_tolerance = 1e-8;
+      struct Cached {  // the per-cosine work, memoized for the last mu_i and mu_o (not thread-safe)
+        LsHalfSpace hs;
+        LsHalfSpace::Direction di, dout;
+        bool have_i = false, have_o = false;
+      };
+      auto c = std::make_shared<Cached>(Cached{LsHalfSpace(p[0], opt), {}, {}, false, false});
+      return [c](const AuditVec& wi, const AuditVec& wo) {
+        if (!c->have_i || c->di.mu != wi.z) c->hs.direction(wi.z, c->di), c->have_i = true;
+        if (!c->have_o || c->dout.mu != wo.z) c->hs.direction(wo.z, c->dout), c->have_o = true;
+        const double phi = azimuth_difference(wi, wo);
+        return ls_f_single(c->hs.c(), wi.z, wo.z, phi) + c->hs.f_multiple(c->di, c->dout, phi);
+      };
     };
     m.cost = AuditCost::slow;
     out.push_back(std::move(m));

@@ -3,6 +3,7 @@
 // the GGX, Beckmann and generalized Beckmann NDFs of numerics/microfacet_ndf.hpp. With F = 1
 // the single-scattering lobe loses energy (albedo < 1), so albedo > 1 is a failure.
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "numerics/brdf_audit.hpp"
@@ -12,14 +13,27 @@ namespace brdftab::numerics {
 
 namespace {
 
+// Lambda(mu) with a one-entry memo per argument slot: the audit's sweeps and quadratures repeat
+// mu_i and mu_o, and the generalized Beckmann Lambda (Eq. 41) costs ~10 us. Not thread-safe: one
+// BoundBrdf per thread.
+struct LambdaMemo {
+  MicrofacetNdf ndf;
+  double mu[2] = {-1, -1}, value[2] = {0, 0};
+  double operator()(int slot, double m) {
+    if (m != mu[slot]) mu[slot] = m, value[slot] = ndf_lambda(ndf, m);
+    return value[slot];
+  }
+};
+
 BoundBrdf lobe(const MicrofacetNdf& ndf) {
   check_ndf(ndf);
   const NdfEvaluator d(ndf);
-  return [ndf, d](const AuditVec& wi, const AuditVec& wo) {
+  auto lambda = std::make_shared<LambdaMemo>(LambdaMemo{ndf});
+  return [lambda, d](const AuditVec& wi, const AuditVec& wo) {
     const double hx = wi.x + wo.x, hy = wi.y + wo.y, hz = wi.z + wo.z;
     // tan^2(theta_h) without cancellation near the peak
     const double t2 = (hx * hx + hy * hy) / (hz * hz);
-    const double g2 = 1.0 / (1.0 + ndf_lambda(ndf, wi.z) + ndf_lambda(ndf, wo.z));
+    const double g2 = 1.0 / (1.0 + (*lambda)(0, wi.z) + (*lambda)(1, wo.z));
     return d.d_tan2(t2) * g2 / (4 * wi.z * wo.z);
   };
 }

@@ -1,6 +1,7 @@
 // Filip et al., highlight-stencil BRDF (Eq. 2-10); see filip_stencil_model.hpp.
 #include "numerics/filip_stencil_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
