@@ -25,7 +25,7 @@ struct Material {
 struct Config {
   std::vector<Material> materials = {{"fabric", numerics::filip_example_fabric()},
                                      {"brushed", numerics::filip_example_brushed()}};
-  double theta_i_max_deg = 80, theta_o_max_deg = 80;
+  double theta_i_max_deg = 75, theta_o_max_deg = 75;  // the UTIA measurements' range
   int theta_i_points = 9, phi_i_points = 7;         // incident grid (phi_i in [0, 180] deg)
   int theta_o_points = 33, phi_o_points = 49;       // f table and CDF edges (phi_o in [0, 360] deg)
   double quadrature_panel_deg = 1.0;                // exact integrals: 4-point Gauss-Legendre panels

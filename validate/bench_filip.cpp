@@ -23,9 +23,9 @@ void register_benchmarks(const BenchContext& ctx) {
   std::mt19937_64 rng(16);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   for (int i = 0; i < 256; ++i) {
-    pts->push_back(80 * kDeg * uni(rng));
+    pts->push_back(75 * kDeg * uni(rng));
     pts->push_back(360 * kDeg * uni(rng));
-    pts->push_back(80 * kDeg * uni(rng));
+    pts->push_back(75 * kDeg * uni(rng));
     pts->push_back(360 * kDeg * uni(rng));
   }
   const auto params = std::make_shared<numerics::FilipParams>(numerics::filip_example_fabric());

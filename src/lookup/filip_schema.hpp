@@ -10,7 +10,8 @@
 //                              (the model has kinks, and f spans orders of magnitude between normal
 //                              and grazing angles: interpolating ln f keeps the relative error
 //                              bounded; the stored errors are errors of ln f, i.e. relative errors);
-//   filip_albedo_<m>           A(theta_i, phi_i) = Integral_{theta_o <= theta_max} f cos theta_o d omega_o;
+//   filip_albedo_<m>           ln A(theta_i, phi_i), A = Integral_{theta_o <= theta_max} f cos theta_o d omega_o
+//                              (A grows by orders of magnitude towards grazing incidence);
 //   filip_marginal_cdf_<m>     C(theta_i, phi_i, theta) = Integral_{theta_o <= theta} f cos d omega_o / A,
 //                              on the strip edges theta = k dtheta, dtheta = theta_max / (n - 1);
 //   filip_conditional_cdf_<m>  D(theta_i, phi_i, theta_lo, phi) = Integral over the strip
@@ -35,7 +36,7 @@ inline constexpr DatasetSchema kBrdf{
 // f = exp(g) - kLogFloor (1/sr): the floor keeps g finite where f = 0.
 inline constexpr double kLogFloor = 1e-10;
 inline constexpr DatasetSchema kAlbedo{
-    "filip_albedo_", true, "A(theta_i, phi_i): albedo over theta_o <= theta_max of the Filip et al. BRDF, material '",
+    "filip_albedo_", true, "ln A(theta_i, phi_i): ln of the albedo over theta_o <= theta_max of the Filip et al. BRDF, material '",
     2, {kThetaI, kPhiI}};
 inline constexpr DatasetSchema kMarginal{
     "filip_marginal_cdf_", true, "C(theta_i, phi_i, theta_o): marginal CDF in theta_o of f cos, material '", 3,
