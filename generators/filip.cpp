@@ -9,7 +9,7 @@
 // the incident grid nodes. Manifest entry:
 //   { "materials": [{"name": "fabric", "parameters": {"phi_a1": 0, ..., "dw_frac": 0.15}}, ...],
 //     "theta_i_max_deg": 75, "theta_o_max_deg": 75, "theta_i_points": 9, "phi_i_points": 7,
-//     "theta_o_points": 33, "phi_o_points": 49, "quadrature_panel_deg": 1 }
+//     "theta_o_points": 33, "phi_o_points": 49, "quadrature_panel_deg": 2 }
 #include "generators/filip.hpp"
 
 #include <cmath>
@@ -203,7 +203,7 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
           base_spec(std::string(sc::kAlbedo.name) + m.name, std::string(sc::kAlbedo.quantity) + m.name + q, c);
       spec.axes = {ax_ti, ax_pi};
       spec.method = quad;
-      spec.error_rows = std::max(4, c.error_rows / 2);
+      spec.error_rows = std::max(4, c.error_rows / 4);  // each point is a full integral
       spec.error_per_row = 4;
       const RowFunction row = [p, to_max, panel](std::span<const double> o, std::span<const double> phis,
                                                  std::span<double> out) {

@@ -28,7 +28,7 @@ struct Config {
   double theta_i_max_deg = 75, theta_o_max_deg = 75;  // the UTIA measurements' range
   int theta_i_points = 9, phi_i_points = 7;         // incident grid (phi_i in [0, 180] deg)
   int theta_o_points = 33, phi_o_points = 49;       // f table and CDF edges (phi_o in [0, 360] deg)
-  double quadrature_panel_deg = 1.0;                // exact integrals: 4-point Gauss-Legendre panels
+  double quadrature_panel_deg = 2.0;                // exact integrals: 4-point Gauss-Legendre panels
   int error_rows = 64, error_per_row = 16;
 };
 
