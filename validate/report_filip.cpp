@@ -78,7 +78,9 @@ void tables_section(ReportContext& ctx, std::ostream& md, char* buf, std::size_t
                                    ctx.tables->table(std::string(sc::kFile), std::string(sc::kConditional.name) + mat));
       std::string mc;
       double var_ratio = 0;
-      for (const auto& [ti, pi_] : {std::pair{30 * kDeg, 60 * kDeg}, std::pair{47 * kDeg, 200 * kDeg}}) {
+      // a tabulated incident node (the albedo table is exact there up to its quadrature) and a point between nodes
+      const double node_t = la.table.axis(0).value(3), node_p = la.table.axis(1).value(2);
+      for (const auto& [ti, pi_] : {std::pair{node_t, node_p}, std::pair{47 * kDeg, 200 * kDeg}}) {
         const auto wi = numerics::filip_direction(ti, pi_);
         const int N = 20000;
         double sum = 0, sum2 = 0, csum = 0, csum2 = 0;
@@ -97,7 +99,7 @@ void tables_section(ReportContext& ctx, std::ostream& md, char* buf, std::size_t
         const double mean = sum / N, sd = std::sqrt(std::max(0.0, sum2 / N - mean * mean) / N);
         const double cmean = csum / N, cvar = csum2 / N - cmean * cmean, var = sum2 / N - mean * mean;
         const double table = std::exp(la.table.eval2(ti, std::fmod(pi_, kPi)));
-        std::snprintf(buf, n, "%s%.4f +- %.4f vs %.4f (theta_i %.0f, phi_i %.0f deg)", mc.empty() ? "" : "; ", mean,
+        std::snprintf(buf, n, "%s%.4f +- %.4f vs %.4f (theta_i %.4g, phi_i %.4g deg)", mc.empty() ? "" : "; ", mean,
                       sd, table, ti / kDeg, pi_ / kDeg);
         mc += buf;
         var_ratio = std::max(var_ratio, cvar / std::max(var, 1e-300));
