@@ -18,4 +18,5 @@
   X(microfacet_albedo)      \
   X(htsg)                   \
   X(hazy_gloss)             \
-  X(hp)
+  X(hp)                     \
+  X(filip)

@@ -70,6 +70,14 @@ int run_main(int argc, char** argv) {
   i->add_option("file", info_files, "table file(s) (.h5)")->required();
   i->add_flag("--markdown", info_markdown, "one Markdown table row per dataset (accepts several files)");
 
+  AuditCommandOptions au;
+  auto* a = app.add_subcommand("audit", "BRDF audit of a model: positivity/NaN to grazing angles, reciprocity, "
+                                        "albedo <= 1, continuity at parameter edges");
+  a->add_option("model", au.model, "a model (see --list) or all");
+  a->add_option("--params", au.params, "NAME=VALUE,... overrides of the model's default parameters")
+      ->delimiter(',');
+  a->add_flag("--list", au.list, "list the models and their parameters");
+
   bool allow_foreign = false, force = false;
   for (CLI::App* sub : {static_cast<CLI::App*>(&app), e, v, b, i})
     sub->add_flag("--allow-foreign", allow_foreign,
@@ -100,6 +108,13 @@ int run_main(int argc, char** argv) {
   if (b->parsed()) {
     be.benchmark_args = b->remaining();
     return run_bench(be, std::cerr);
+  }
+  if (a->parsed()) {
+    if (au.model.empty() && !au.list) {
+      std::cerr << "brdftab audit: MODEL is required (or --list)\n";
+      return 2;
+    }
+    return run_audit(au, std::cout, std::cerr);
   }
   if (i->parsed()) {
     if (info_markdown) return run_info_markdown({info_files.begin(), info_files.end()}, std::cout, std::cerr);

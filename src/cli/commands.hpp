@@ -49,6 +49,13 @@ struct BenchOptions {
 };
 int run_bench(const BenchOptions& o, std::ostream& err);
 
+struct AuditCommandOptions {
+  std::string model;                // a registered model (numerics/brdf_audit_model_list.hpp) or "all"
+  std::vector<std::string> params;  // NAME=VALUE overrides of the model's defaults
+  bool list = false;                // list the models and their parameters
+};
+int run_audit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err);
+
 // Parses the command line and runs the subcommand.
 int run_main(int argc, char** argv);
 

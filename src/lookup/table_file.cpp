@@ -197,6 +197,8 @@ constexpr AttributeRule kDatasetRules[] = {
     {"haze_kappa", Kind::number, 0, 1e50, false},
     // hp: the material parameters (numerics::hp_material_text)
     {"hp_material", Kind::text, 0, 0, false},
+    // filip: the material's parameter set, "phi_a1=...,w1=...,..." (generators/filip.hpp)
+    {"filip_parameters", Kind::text, 0, 0, false},
 };
 constexpr AttributeRule kFileRules[] = {
     {"schema_version", Kind::integer, 0, 0, false},

@@ -1,0 +1,46 @@
+#pragma once
+// Table family filip: per material (a named parameter set of the Filip et al. highlight-stencil
+// BRDF) the tabulated BRDF and the importance-sampling tables (see filip.cpp; schema in
+// lookup/filip_schema.hpp, sampler in lookup/filip.hpp).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "generators/family.hpp"
+#include "numerics/filip_stencil_model.hpp"
+
+namespace brdftab::gen::filip {
+
+inline constexpr const char* kSummary =
+    "Filip et al. highlight-stencil BRDF per material: f table and marginal/conditional CDF tables for "
+    "importance sampling";
+
+struct Material {
+  std::string name;
+  numerics::FilipParams params;
+};
+
+// Grids in points; angles in degrees in the manifest (radians in the tables).
+struct Config {
+  std::vector<Material> materials = {{"fabric", numerics::filip_example_fabric()},
+                                     {"brushed", numerics::filip_example_brushed()}};
+  double theta_i_max_deg = 75, theta_o_max_deg = 75;  // the UTIA measurements' range
+  int theta_i_points = 9, phi_i_points = 7;         // incident grid (phi_i in [0, 180] deg)
+  int theta_o_points = 33, phi_o_points = 49;       // f table and CDF edges (phi_o in [0, 360] deg)
+  double quadrature_panel_deg = 2.0;                // exact integrals: 4-point Gauss-Legendre panels
+  int error_rows = 64, error_per_row = 16;
+};
+
+Config read_config(const nlohmann::json& entry);
+nlohmann::json to_json(const Config& c);
+std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx);
+Config test_config();
+Config narrowed(Config c);
+
+// "phi_a1=0,w1=0.7,..." (the `filip_parameters` attribute) and back; parse throws
+// std::invalid_argument naming the problem.
+std::string parameters_text(const numerics::FilipParams& p);
+numerics::FilipParams parse_parameters_text(const std::string& text);
+
+}  // namespace brdftab::gen::filip

@@ -1,0 +1,11 @@
+#pragma once
+// THE list of BRDF models that `brdftab audit` knows, in listing order. Registering a model is
+// one line here plus its function `std::vector<AuditableModel> audit_models_K()` in
+// numerics/brdf_audit_K.cpp (see numerics/brdf_audit.hpp for AuditableModel):
+//   microfacet  GGX, Beckmann, generalized Beckmann lobes (numerics/microfacet_ndf.hpp)
+//   ls          Lambertian spheres: d'Eon's model (corrected), its fast Eq. 48, the exact BRDF (slow)
+//   filip       Filip et al. highlight stencils (numerics/filip_stencil_model.hpp)
+#define BRDFTAB_AUDIT_MODELS(X) \
+  X(microfacet)                 \
+  X(ls)                         \
+  X(filip)
