@@ -39,7 +39,7 @@ def test_npy_holds_the_values_and_axes(tmp_path):
             for dim in v.dims:
                 axis = dim[0].attrs["name"]
                 np.testing.assert_array_equal(np.load(tmp_path / f"{name}.{axis}.npy"), dim[0][()])
-        assert len(files) == 1 + v.ndim
+            assert len(files) == 1 + v.ndim
 
 
 def test_glsl_compiles_for_every_1d_2d_table(tmp_path):
