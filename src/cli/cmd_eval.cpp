@@ -250,9 +250,10 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
   // An input column named like an output column would appear twice in the output.
   for (const auto& name : q->outputs)
     if (column_by_name.count(name)) {
+      std::string outputs;
+      for (const auto& o : q->outputs) outputs += (outputs.empty() ? "" : ", ") + o;
       err << what << ": header (line 1): input column '" << escape_control(name)
-          << "' has the name of an output column (outputs: " << list(q->outputs)
-          << "); rename or drop that input column\n";
+          << "' has the name of an output column (outputs: " << outputs << "); rename or drop that input column\n";
       return 2;
     }
   std::vector<std::size_t> column_of(np);
