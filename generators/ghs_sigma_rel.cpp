@@ -160,6 +160,9 @@ BuiltTable build_grid(const Config& g, const GenerateContext& ctx) {
   add_common_attributes(t, g.w_scale);
   t.dataset.attributes["lookup"] =
       "sigma_rel^2 = table(B, w(B, s), c) * (1 - (1 + B^2)^(-(c-1)/2)); see src/lookup/ghs_sigma_rel.hpp";
+  t.dataset.attributes["inputs"] = std::string(sc::kGridInputs);
+  t.dataset.attributes["derived_axes"] = std::string(sc::kGridDerivedAxes);
+  t.dataset.attributes["value_formula"] = std::string(sc::kGridValueFormula);
   return t;
 }
 
@@ -189,6 +192,8 @@ BuiltTable build_material(const Material& m, const Config& c, const GenerateCont
   t.dataset.attributes["B"] = m.B;
   t.dataset.attributes["c"] = m.c;
   t.dataset.attributes["lookup"] = "sigma_rel^2 = table(w(B, s)); see lookup::GhsSigmaRelMaterial";
+  t.dataset.attributes["inputs"] = std::string(sc::kMaterialInputs);
+  t.dataset.attributes["derived_axes"] = std::string(sc::kMaterialDerivedAxes);
   return t;
 }
 

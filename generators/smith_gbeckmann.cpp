@@ -87,6 +87,8 @@ BuiltTable build_one(const schema::DatasetSchema& ds, const Config& c, double lo
   BuiltTable t = build_table(spec, fill_row, ctx);
   t.dataset.attributes["b_definition"] = "b = a * M1(p), M1(p) = Gamma(3/(2p)) / (pi Gamma(1/p))";
   t.dataset.attributes["lookup"] = "G1 = table(p, a * M1(p)); see src/lookup/smith_gbeckmann.hpp";
+  t.dataset.attributes["inputs"] = std::string(sc::kInputs);
+  t.dataset.attributes["derived_axes"] = std::string(sc::kDerivedAxes);
   t.dataset.attributes["source"] =
       "Holzschuch & Pacanowski, A Physically-Based Reflectance Model Combining Reflection and Diffraction, "
       "Sec. 4.2 Eq. 38-42 (Eq. 40 corrected, validate/ERRATA.md)";

@@ -48,14 +48,14 @@ tablewrite::DatasetToWrite sample_dataset(const std::string& name = "H_test", lo
 // Re-opens an HDF5 file for writing to tamper with it.
 void set_int_attribute(const fs::path& file, const std::string& dataset, const std::string& name, long long v) {
   hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  hid_t d = H5Dopen2(f, dataset.c_str(), H5P_DEFAULT);
+  hid_t d = H5Oopen(f, dataset.c_str(), H5P_DEFAULT);  // a dataset or a group ("." = the root)
   H5Adelete(d, name.c_str());
   hid_t sp = H5Screate(H5S_SCALAR);
   hid_t a = H5Acreate2(d, name.c_str(), H5T_STD_I64LE, sp, H5P_DEFAULT, H5P_DEFAULT);
   H5Awrite(a, H5T_NATIVE_LLONG, &v);
   H5Aclose(a);
   H5Sclose(sp);
-  H5Dclose(d);
+  H5Oclose(d);
   H5Fclose(f);
   testing::reseal(file);  // a hostile author can write a matching digest: the reader must still check
 }
@@ -115,7 +115,7 @@ TEST_CASE("HDF5 round trip keeps values, axes and every attribute") {
     CHECK(lookup::file_attributes(dir / "t.h5").count("generator") == 1);
     // The axes are real HDF5 dimension scales, readable without brdftab.
     hid_t f = H5Fopen((dir / "t.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    hid_t d = H5Dopen2(f, "H_test", H5P_DEFAULT);
+    hid_t d = H5Dopen2(f, "H_test/H_test", H5P_DEFAULT);  // schema version 2: /NAME/NAME
     CHECK(H5DSget_num_scales(d, 0) == 1);
     CHECK(H5DSget_num_scales(d, 1) == 1);
     H5Dclose(d);
@@ -169,12 +169,18 @@ TEST_CASE("missing, corrupt, truncated and wrong-schema files raise clear TableF
       }
     }
   }
-  {  // Wrong schema version.
-    fs::copy_file(dir / "good.h5", dir / "v2.h5", fs::copy_options::overwrite_existing);
-    set_int_attribute(dir / "v2.h5", "H_test", "schema_version", 2);
-    CHECK(error_of([&] { lookup::load_table(dir / "v2.h5", "H_test"); }) ==
-          "table file '" + (dir / "v2.h5").string() +
-              "', dataset 'H_test': schema_version is 2, this library reads version 1");
+  {  // Wrong schema version: unknown, or not the file's.
+    fs::copy_file(dir / "good.h5", dir / "v3.h5", fs::copy_options::overwrite_existing);
+    set_int_attribute(dir / "v3.h5", "H_test/H_test", "schema_version", 3);
+    CHECK(error_of([&] { lookup::load_table(dir / "v3.h5", "H_test"); }) ==
+          "table file '" + (dir / "v3.h5").string() +
+              "', dataset 'H_test': schema_version is 3, this library reads versions 1 to 2");
+    set_int_attribute(dir / "v3.h5", "H_test/H_test", "schema_version", 1);
+    CHECK(error_of([&] { lookup::load_table(dir / "v3.h5", "H_test"); }) ==
+          "table file '" + (dir / "v3.h5").string() + "', dataset 'H_test': schema_version is 1 but the file's is 2");
+    set_int_attribute(dir / "v3.h5", ".", "schema_version", 3);
+    CHECK(error_of([&] { lookup::list_tables(dir / "v3.h5"); }) ==
+          "table file '" + (dir / "v3.h5").string() + "': schema_version is 3, this library reads versions 1 to 2");
   }
   CHECK(error_of([&] { lookup::load_table(dir / "good.h5", "H_other"); }) ==
         "table file '" + (dir / "good.h5").string() + "', dataset 'H_other': no such dataset");
@@ -209,7 +215,7 @@ TEST_CASE("an axis that is not monotonic or not regular in its transform is reje
   const fs::path dir = fresh_dir("axes");
   tablewrite::write_table_file(dir / "t.h5", {sample_dataset()});
   hid_t f = H5Fopen((dir / "t.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  hid_t a = H5Dopen2(f, "axes/H_test/c", H5P_DEFAULT);
+  hid_t a = H5Dopen2(f, "H_test/c", H5P_DEFAULT);
   std::vector<double> c(9);
   H5Dread(a, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, c.data());
   std::vector<double> swapped = c;
@@ -317,7 +323,7 @@ TEST_CASE("degenerate shapes and mistyped attributes are reported, not crashed o
   {
     tablewrite::write_table_file(dir / "t.h5", {sample_dataset()});
     hid_t f = H5Fopen((dir / "t.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-    hid_t d = H5Dopen2(f, "H_test", H5P_DEFAULT);
+    hid_t d = H5Dopen2(f, "H_test/H_test", H5P_DEFAULT);
     H5Adelete(d, "schema_version");
     hid_t sp = H5Screate(H5S_SCALAR);
     hid_t a = H5Acreate2(d, "schema_version", H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT);

@@ -49,6 +49,9 @@ int run_main(int argc, char** argv) {
   e->add_option("quantity", ev.quantity, "one of: " + quantities)->required();
   e->add_option("--method", ev.method, "exact | table | fit")->check(CLI::IsMember({"exact", "table", "fit"}));
   e->add_option("--tables", ev.tables_dir, "table folder (default: tables)");
+  e->add_option("--dataset", ev.dataset,
+                 "with --method table: read this dataset instead of the default one, e.g. a compact variant "
+                 "(same axes; `brdftab info FILE` lists them)");
 
   ValidateOptions va;
   auto* v = app.add_subcommand("validate", "accuracy report: fits and tables against exact numerics");
@@ -65,10 +68,19 @@ int run_main(int argc, char** argv) {
   b->allow_extras();
 
   std::vector<std::string> info_files;
-  bool info_markdown = false;
+  bool info_markdown = false, info_json = false;
   auto* i = app.add_subcommand("info", "describe the tables in an HDF5 file");
   i->add_option("file", info_files, "table file(s) (.h5)")->required();
   i->add_flag("--markdown", info_markdown, "one Markdown table row per dataset (accepts several files)");
+  i->add_flag("--json", info_json, "one JSON document describing every file and table")->excludes("--markdown");
+
+  ExportOptions ex;
+  auto* x = app.add_subcommand("export", "write one table as a C++ header, .npy files or a GLSL snippet");
+  x->add_option("file", ex.file, "table file (.h5)")->required();
+  x->add_option("dataset", ex.dataset, "table name (`brdftab info FILE` lists them)")->required();
+  x->add_option("--format", ex.format, "header | npy | glsl (default: header)")
+      ->check(CLI::IsMember({"header", "npy", "glsl"}));
+  x->add_option("--out", ex.out_dir, "output folder (default: .)");
 
   AuditCommandOptions au;
   auto* a = app.add_subcommand("audit", "BRDF audit of a model: positivity/NaN to grazing angles, reciprocity, "
@@ -79,7 +91,7 @@ int run_main(int argc, char** argv) {
   a->add_flag("--list", au.list, "list the models and their parameters");
 
   bool allow_foreign = false, force = false;
-  for (CLI::App* sub : {static_cast<CLI::App*>(&app), e, v, b, i})
+  for (CLI::App* sub : {static_cast<CLI::App*>(&app), e, v, b, i, x})
     sub->add_flag("--allow-foreign", allow_foreign,
                   "read table files without a brdftab digest (each is validated in a child process first)");
   g->add_flag("--force", force, "generate tables above the pre-flight size limit (4M values)");
@@ -116,7 +128,9 @@ int run_main(int argc, char** argv) {
     }
     return run_audit(au, std::cout, std::cerr);
   }
+  if (x->parsed()) return run_export(ex, std::cout, std::cerr);
   if (i->parsed()) {
+    if (info_json) return run_info_json({info_files.begin(), info_files.end()}, std::cout, std::cerr);
     if (info_markdown) return run_info_markdown({info_files.begin(), info_files.end()}, std::cout, std::cerr);
     int status = 0;
     for (const auto& f : info_files) status = std::max(status, run_info(f, std::cout, std::cerr));

@@ -145,28 +145,33 @@ class Spool {
   std::FILE* file_ = nullptr;
 };
 
-// Lines of a stream, as std::getline would give them, read in blocks of 1 MiB (one
-// istream::read per block instead of a locked character-by-character read of std::cin).
-// Linear in the input length however long a line is.
+// Lines of a stream, read in blocks of 1 MiB (one istream::read per block instead of a
+// locked character-by-character read of std::cin). A line ends at LF, CR LF or a lone CR
+// (old Mac files); a UTF-8 byte order mark before the first line is dropped. Linear in
+// the input length however long a line is.
 class LineReader {
  public:
   explicit LineReader(std::istream& in) : in_(in) {}
   bool next(std::string& line) {
     while (true) {
-      const std::size_t nl = buf_.find('\n', scan_);
-      if (nl != std::string::npos) {
+      const std::size_t nl = buf_.find_first_of("\r\n", scan_);
+      // A CR at the end of the buffer may be the first half of CR LF: read on to decide.
+      const bool undecided = nl != std::string::npos && buf_[nl] == '\r' && nl + 1 == buf_.size() && !eof_;
+      if (nl != std::string::npos && !undecided) {
         line.assign(buf_, pos_, nl - pos_);
-        pos_ = scan_ = nl + 1;
-        return true;
+        std::size_t after = nl + 1;
+        if (buf_[nl] == '\r' && after < buf_.size() && buf_[after] == '\n') ++after;
+        pos_ = scan_ = after;
+        return deliver(line);
       }
       if (eof_) {
         if (pos_ == buf_.size()) return false;
         line.assign(buf_, pos_);
         pos_ = scan_ = buf_.size();
-        return true;
+        return deliver(line);
       }
       buf_.erase(0, pos_);
-      scan_ = buf_.size();
+      scan_ = undecided ? nl - pos_ : buf_.size();
       pos_ = 0;
       const std::size_t old = buf_.size();
       buf_.resize(old + kBlock);
@@ -178,7 +183,13 @@ class LineReader {
   }
 
  private:
+  bool deliver(std::string& line) {
+    if (first_ && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
+    first_ = false;
+    return true;
+  }
   static constexpr std::size_t kBlock = std::size_t(1) << 20;
+  bool first_ = true;
   std::istream& in_;
   std::string buf_;
   std::size_t pos_ = 0, scan_ = 0;  // start of the next line; where the newline search resumes
@@ -213,6 +224,10 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
     return 2;
   }
   const Method& method = method_it->second;
+  if (!o.dataset.empty() && o.method != "table") {
+    err << "brdftab eval " << q->name << ": --dataset needs --method table\n";
+    return 2;
+  }
   std::vector<std::string> param_names;
   for (const auto& p : q->parameters) param_names.push_back(p.name);
   const std::string what = "brdftab eval " + q->name;
@@ -234,6 +249,15 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
     }
   // column_of[i] = kAbsent: an optional parameter without a column (its fallback is used).
   constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
+  // An input column named like an output column would appear twice in the output.
+  for (const auto& name : q->outputs)
+    if (column_by_name.count(name)) {
+      std::string outputs;
+      for (const auto& o : q->outputs) outputs += (outputs.empty() ? "" : ", ") + o;
+      err << what << ": header (line 1): input column '" << escape_control(name)
+          << "' has the name of an output column (outputs: " << outputs << "); rename or drop that input column\n";
+      return 2;
+    }
   std::vector<std::size_t> column_of(np);
   std::vector<int> param_of_column(ncol, -1);
   for (std::size_t i = 0; i < np; ++i) {
@@ -295,8 +319,9 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
             continue;
           }
           const std::string& cell = cells[column_of[i]];
-          const auto value = parse_number(cell);
-          const std::string why = value ? domain_problem(p, *value) : "is not a number";
+          std::string number_problem;
+          const auto value = parse_number(cell, &number_problem);
+          const std::string why = value ? domain_problem(p, *value) : number_problem;
           if (!why.empty())
             problem = where() + ", column '" + p.name + "': value '" + cell + "' " + why + " " + p.domain;
           else
@@ -355,6 +380,7 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
           err << what << " --method " << o.method << ": row 1 (line " << ch.line[0] << "): " << e.what() << "\n";
           return 2;
         }
+        if (!o.dataset.empty()) tables->substitute(o.dataset);
         ctx.tables = tables.get();
       }
       const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(ch.rows);
@@ -387,6 +413,11 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
         }
         spool_out.write(ch.text[r].data(), ch.text[r].size());
       }
+    }
+    if (tables && !o.dataset.empty() && !tables->substituted()) {
+      err << what << " --dataset " << escape_control(o.dataset) << ": no such dataset in the table file(s) that "
+          << q->name << " reads\n";
+      return 2;
     }
     spool_out.copy_to(out);
     out.flush();

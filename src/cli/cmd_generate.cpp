@@ -81,8 +81,14 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
   ctx.progress = &progress;
   std::vector<gen::TableSummary> summaries;
   const auto t0 = std::chrono::steady_clock::now();
+  auto selected = [&](const auto& e) {
+    return o.only.empty() || std::find(o.only.begin(), o.only.end(), e.family) != o.only.end();
+  };
+  const auto file_count = static_cast<std::size_t>(std::count_if(entries.begin(), entries.end(), selected));
+  std::size_t file_index = 0;
   for (const auto& e : entries) {
-    if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), e.family) == o.only.end()) continue;
+    if (!selected(e)) continue;
+    progress.start_file(++file_index, file_count, e.family);
     try {
       auto s = gen::find_family(e.family)->generate(e.entry, ctx);
       summaries.insert(summaries.end(), s.begin(), s.end());

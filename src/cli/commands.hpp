@@ -25,6 +25,7 @@ struct EvalOptions {
   std::string quantity;
   std::string method = "exact";
   std::filesystem::path tables_dir;
+  std::string dataset;  // --dataset: with --method table, read this table instead (same axes)
 };
 int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ostream& err);
 
@@ -32,6 +33,17 @@ int run_info(const std::filesystem::path& file, std::ostream& out, std::ostream&
 // One Markdown table row per dataset of the files (file, dataset, shape, storage,
 // interpolation, size, measured errors), as in the README's accuracy table.
 int run_info_markdown(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err);
+// `info --json`: every file and table as one JSON document (cmd_info_json.cpp).
+int run_info_json(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err);
+
+struct ExportOptions {
+  std::filesystem::path file;
+  std::string dataset;
+  std::string format = "header";  // header | npy | glsl
+  std::filesystem::path out_dir = ".";
+};
+// `export`: one table as a C++ header, .npy files or a GLSL snippet (cmd_export.cpp).
+int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err);
 
 struct ValidateOptions {
   std::vector<std::string> only;  // run only these families' sections

@@ -52,15 +52,20 @@ std::string escape_control(std::string_view s) {
   return out;
 }
 
-std::optional<double> parse_number(const std::string& cell) {
-  if (cell.empty()) return std::nullopt;
+std::optional<double> parse_number(const std::string& cell, std::string* problem) {
+  auto fail = [&](const char* why) -> std::optional<double> {
+    if (problem) *problem = why;
+    return std::nullopt;
+  };
+  if (cell.empty()) return fail("is not a number");
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(cell.c_str(), &end);
-  if (end != cell.c_str() + cell.size()) return std::nullopt;
+  if (end != cell.c_str() + cell.size()) return fail("is not a number");
   // Overflow (1e999 -> inf) or underflow to zero (1e-400 -> 0) would change the value
   // silently; a literal inf or a subnormal is fine.
-  if (errno == ERANGE && (std::isinf(v) || v == 0)) return std::nullopt;
+  if (errno == ERANGE && std::isinf(v)) return fail("overflows a double (magnitude above 1.8e308)");
+  if (errno == ERANGE && v == 0) return fail("underflows a double (nonzero, magnitude below 4.9e-324)");
   return v;  // may be NaN or +-inf; the domain check decides
 }
 

@@ -51,6 +51,32 @@ Transform transform_from_name(std::string_view name) {
   throw std::invalid_argument("unknown axis transform '" + std::string(name) + "' (known: " + known + ")");
 }
 
+std::string_view transform_formula(Transform t) {
+  switch (t) {
+    case Transform::identity: return "x";
+    case Transform::log: return "log(x)";
+    case Transform::sqrt: return "sqrt(x)";
+    case Transform::sqrt_one_minus: return "sqrt(1.0 - x)";
+    case Transform::x_over_k_plus_x: return "where(isinf(x), 1.0, x / (scale + x))";
+    case Transform::log_x_minus_1: return "log(x - 1.0)";
+    case Transform::fourth_root: return "sqrt(sqrt(x))";
+  }
+  return "x";
+}
+
+std::string_view inverse_transform_formula(Transform t) {
+  switch (t) {
+    case Transform::identity: return "u";
+    case Transform::log: return "exp(u)";
+    case Transform::sqrt: return "u * u";
+    case Transform::sqrt_one_minus: return "1.0 - u * u";
+    case Transform::x_over_k_plus_x: return "where(u >= 1.0, inf, scale * u / (1.0 - u))";
+    case Transform::log_x_minus_1: return "1.0 + exp(u)";
+    case Transform::fourth_root: return "(u * u) * (u * u)";
+  }
+  return "u";
+}
+
 double invert_transform(Transform t, double u, double k) {
   switch (t) {
     case Transform::identity: return u;

@@ -27,6 +27,14 @@ std::string_view transform_name(Transform t);
 // Throws std::invalid_argument for an unknown name.
 Transform transform_from_name(std::string_view name);
 
+// The transform and its inverse as expressions, written to schema version 2 files (axis
+// attributes `transform_formula`, `inverse_formula`) so that a script can evaluate them:
+// NumPy syntax over the variable x (resp. u) and the axis attribute `scale` (k), using only
+// log, exp, sqrt, isinf, where and inf. They compute exactly what apply_transform and
+// invert_transform compute, operation for operation.
+std::string_view transform_formula(Transform t);
+std::string_view inverse_transform_formula(Transform t);
+
 // u = T(x); `k` is the axis scale (only x/(k+x) uses it).
 inline double apply_transform(Transform t, double x, double k) {
   switch (t) {

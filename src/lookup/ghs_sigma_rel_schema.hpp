@@ -38,6 +38,16 @@ inline double s_of_w(double B, double w, double w_scale) {
 // K-correlation mass inside the unit disk), without cancellation.
 inline double normal_value(double B, double c) { return -std::expm1(-0.5 * (c - 1) * std::log1p(B * B)); }
 
+// The maps above as formulas for scripts (schema version 2 dataset attributes `inputs`,
+// `derived_axes`, `value_formula`; README "Table file format"), in the operations of
+// lookup/ghs_sigma_rel.hpp; w_scale, B (and c) of a material table are its attributes.
+inline constexpr std::string_view kGridInputs = "B, s, c";
+inline constexpr std::string_view kGridDerivedAxes = "w = log1p((w_scale * B) * (1 - s)) / log1p(w_scale * B)";
+inline constexpr std::string_view kGridValueFormula = "table * -expm1(-0.5 * (c - 1) * log1p(B * B))";
+inline constexpr std::string_view kMaterialInputs = "s";
+inline constexpr std::string_view kMaterialDerivedAxes =
+    "w = log1p((w_scale * B) * (1 - s)) * (1.0 / log1p(w_scale * B))";
+
 inline constexpr std::string_view kWUnits = "log1p(K(1-s))/log1p(K), K = w_scale B";
 inline constexpr AxisSchema kB{"B", lookup::Transform::log, "b/lambda"};
 inline constexpr AxisSchema kW{"w", lookup::Transform::identity, kWUnits};

@@ -1,5 +1,7 @@
 #include "lookup/hdf5_util.hpp"
 
+#include <cstring>
+
 namespace brdftab::lookup::hdf5 {
 
 std::mutex& mutex() {
@@ -19,14 +21,16 @@ void write_attribute(hid_t obj, const std::string& name, const Attribute& value)
   Hid space(H5Screate(H5S_SCALAR), H5Sclose);
   if (!space.valid()) throw Error("cannot create a dataspace for attribute " + name);
   if (auto s = std::get_if<std::string>(&value)) {
+    // Variable-length UTF-8 (schema version 2): h5py and netCDF-4 read it as str, not bytes.
+    if (s->find('\0') != std::string::npos) throw Error("attribute " + name + " contains a NUL character");
     Hid type(H5Tcopy(H5T_C_S1), H5Tclose);
     if (!type.valid()) throw Error("cannot create the string type for attribute " + name);
-    check(H5Tset_size(type, s->size() + 1), "string type for attribute " + name);
-    check(H5Tset_strpad(type, H5T_STR_NULLTERM), "string type for attribute " + name);
+    check(H5Tset_size(type, H5T_VARIABLE), "string type for attribute " + name);
     check(H5Tset_cset(type, H5T_CSET_UTF8), "string type for attribute " + name);
     Hid a(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
     if (!a.valid()) throw Error("cannot create attribute " + name);
-    check(H5Awrite(a, type, s->c_str()), "cannot write attribute " + name);
+    const char* p = s->c_str();
+    check(H5Awrite(a, type, &p), "cannot write attribute " + name);
   } else if (auto d = std::get_if<double>(&value)) {
     Hid a(H5Acreate2(obj, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
     if (!a.valid()) throw Error("cannot create attribute " + name);
@@ -47,7 +51,7 @@ bool is_ieee_float(hid_t type) {
 }
 }  // namespace
 
-AttributeRead read_attribute(hid_t obj, const char* name, std::size_t max_string) {
+AttributeRead read_attribute(hid_t obj, const char* name, std::size_t max_string, bool variable_length_strings) {
   AttributeRead r;
   const htri_t exists = H5Aexists(obj, name);
   if (exists < 0) {
@@ -71,7 +75,24 @@ AttributeRead read_attribute(hid_t obj, const char* name, std::size_t max_string
   switch (H5Tget_class(type)) {
     case H5T_STRING: {
       const htri_t vlen = H5Tis_variable_str(type);
-      if (vlen != 0) return bad(AttributeRead::wrong_type, "is a variable-length string (expected fixed-length)");
+      if (vlen < 0) return bad(AttributeRead::unreadable, "cannot read its string type");
+      if (vlen > 0 && !variable_length_strings)
+        return bad(AttributeRead::wrong_type, "is a variable-length string (schema version 1 files hold fixed-length ones)");
+      if (vlen > 0) {
+        // Variable-length (schema version 2): read into a HDF5-allocated buffer, copy at
+        // most max_string + 1 bytes, give the buffer back.
+        Hid mem(H5Tcopy(H5T_C_S1), H5Tclose);
+        if (!mem.valid() || H5Tset_size(mem, H5T_VARIABLE) < 0 || H5Tset_cset(mem, H5Tget_cset(type)) < 0)
+          return bad(AttributeRead::unreadable, "cannot build the memory string type");
+        char* p = nullptr;
+        if (H5Aread(attr, mem, &p) < 0) return bad(AttributeRead::unreadable, "cannot read its value");
+        std::string s = p ? std::string(p, strnlen(p, max_string + 1)) : std::string();
+        if (p) H5free_memory(p);
+        if (s.size() > max_string)
+          return bad(AttributeRead::wrong_type, "is a string of more than " + std::to_string(max_string) + " bytes");
+        r.value = std::move(s);
+        break;
+      }
       const std::size_t n = H5Tget_size(type);
       if (n == 0 || n > max_string)
         return bad(AttributeRead::wrong_type,

@@ -62,12 +62,13 @@ inline void check(herr_t status, const std::string& what) {
   if (status < 0) throw Error(what);
 }
 
-// Writes a scalar attribute: a fixed-length NUL-terminated UTF-8 string, an IEEE float64
-// or a 64-bit little-endian integer. Throws Error.
+// Writes a scalar attribute: a variable-length UTF-8 string (schema version 2; version 1
+// wrote fixed-length ones), an IEEE float64 or a 64-bit little-endian integer. Throws Error.
 void write_attribute(hid_t obj, const std::string& name, const Attribute& value);
 
 // Reads one scalar attribute by name (no iteration over the object's attributes).
-// Accepted: fixed-length strings of at most max_string bytes, IEEE float32/float64,
+// Accepted: fixed-length strings, and variable-length ones if `variable_length_strings`
+// (schema version 2), of at most max_string bytes, IEEE float32/float64,
 // integers of at most 64 bits, each with a scalar dataspace. Anything else is
 // wrong_type, with `problem` saying what was found.
 struct AttributeRead {
@@ -75,7 +76,8 @@ struct AttributeRead {
   Attribute value;
   std::string problem;
 };
-AttributeRead read_attribute(hid_t obj, const char* name, std::size_t max_string);
+AttributeRead read_attribute(hid_t obj, const char* name, std::size_t max_string,
+                             bool variable_length_strings = false);
 
 // True if `name` (one path component) exists in group `loc` as a hard link. Soft, external
 // and user-defined links give false with `kind` saying which ("a soft link", "an external

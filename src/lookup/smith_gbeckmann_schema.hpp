@@ -22,6 +22,11 @@ inline double first_moment(double p) { return std::tgamma(1.5 / p) / (std::numbe
 // The b coordinate of a = beta tan(theta).
 inline double b_of_a(double a, double p) { return a * first_moment(p); }
 
+// The same map as formulas for scripts (schema version 2 dataset attributes `inputs`,
+// `derived_axes`; README "Table file format"): the operations of b_of_a, in their order.
+inline constexpr std::string_view kInputs = "p, a";
+inline constexpr std::string_view kDerivedAxes = "b = a * (gamma(1.5 / p) / (pi * gamma(1.0 / p)))";
+
 inline constexpr std::string_view kQuantity =
     "G1(p, b) = 1 / (1 + Lambda(a = b / M1(p), p)), M1(p) = Gamma(3/(2p)) / (pi Gamma(1/p))";
 inline constexpr AxisSchema kP{"p", lookup::Transform::log, "1"};

@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "lookup/hdf5_util.hpp"
+#include "lookup/interpolation_scheme.hpp"
 #include "lookup/number_format.hpp"
 
 namespace brdftab::lookup {
@@ -175,6 +176,15 @@ constexpr AttributeRule kDatasetRules[] = {
     {"error_samples", Kind::integer, 0, 1e15, false},
     {"error_sampling", Kind::text, 0, 0, false},
     {"generation_seconds", Kind::number, 0, kMaxFinite, false},
+    // Schema version 2: the interpolation spelled out (lookup/interpolation_scheme.hpp;
+    // checked against `interpolation`) and derived axes as formulas (README "Table file format").
+    {"interpolation_points", Kind::integer, 2, 4, false},
+    {"interpolation_grid_coordinate", Kind::text, 0, 0, false},
+    {"interpolation_first_node", Kind::text, 0, 0, false},
+    {"interpolation_weights", Kind::text, 0, 0, false},
+    {"inputs", Kind::text, 0, 0, false},
+    {"derived_axes", Kind::text, 0, 0, false},
+    {"value_formula", Kind::text, 0, 0, false},
     // smith_gbeckmann
     {"b_definition", Kind::text, 0, 0, false},
     {"lookup", Kind::text, 0, 0, false},
@@ -211,15 +221,20 @@ constexpr AttributeRule kAxisRules[] = {
     {"units", Kind::text, 0, 0, false},
     // k of x/(k+x); 1 for the others. Positive and finite, within what the transform handles.
     {"scale", Kind::number, 0, 1e300, true},
+    // Schema version 2 (checked against `transform` and the axis values).
+    {"transform_formula", Kind::text, 0, 0, false},
+    {"inverse_formula", Kind::text, 0, 0, false},
+    {"u_first", Kind::number, -kMaxFinite, kMaxFinite, false},
+    {"u_step", Kind::number, -kMaxFinite, kMaxFinite, false},
 };
 
 template <std::size_t N>
 std::map<std::string, Attribute> read_schema_attributes(const std::filesystem::path& file, const std::string& dataset,
                                                         const std::string& where, hid_t obj,
-                                                        const AttributeRule (&rules)[N]) {
+                                                        const AttributeRule (&rules)[N], long long version) {
   std::map<std::string, Attribute> out;
   for (const auto& rule : rules) {
-    const auto r = hdf5::read_attribute(obj, rule.name, kMaxAttributeStringBytes);
+    const auto r = hdf5::read_attribute(obj, rule.name, kMaxAttributeStringBytes, version >= 2);
     const std::string what = where + "attribute '" + rule.name + "' ";
     if (r.status == hdf5::AttributeRead::missing) continue;
     if (r.status == hdf5::AttributeRead::unreadable) fail(file, dataset, what + r.problem);
@@ -379,28 +394,31 @@ std::vector<double> read_values(const OpenFile& f, const std::string& dataset, c
 
 std::string fmt(double v) { return format_number(v); }
 
-Axis read_axis(const OpenFile& f, const std::string& dataset, hid_t axes_group, hid_t scale, unsigned dim,
-               hsize_t expected_n) {
+// `axes_path` is the group the axes must live in: "/<dataset>" (version 2) or
+// "/axes/<dataset>" (version 1).
+Axis read_axis(const OpenFile& f, const std::string& dataset, hid_t axes_group, const std::string& axes_path,
+               long long version, hid_t scale, unsigned dim, hsize_t expected_n) {
   const auto& file = f.path();
   const std::string dim_s = "dimension " + std::to_string(dim);
-  const auto attrs = read_schema_attributes(file, dataset, dim_s + " axis: ", scale, kAxisRules);
+  const auto attrs = read_schema_attributes(file, dataset, dim_s + " axis: ", scale, kAxisRules, version);
   const std::string name = text_of(attrs, "name");
   if (name.empty()) fail(file, dataset, dim_s + ": axis has no 'name' attribute");
   if (name.size() > 255 || name.find('/') != std::string::npos || name == "." || name == "..")
     fail(file, dataset, dim_s + ": axis name is not a valid path component");
   const std::string where = "axis '" + name + "' (" + dim_s + ")";
-  // The scale must be the dataset hard-linked at /axes/<dataset>/<name>: a table linked
+  // The scale must be the dataset hard-linked at <axes_path>/<name>: a table linked
   // under another table's name (whose axes live under the other name) is refused.
   std::string kind;
+  if (name == dataset) fail(file, dataset, where + ": an axis may not have the name of its table");
   if (!hdf5::is_hard_link(axes_group, name.c_str(), &kind))
-    fail(file, dataset, where + ": /axes/" + dataset + "/" + name + " is not a hard-linked dataset (" + kind + ")");
+    fail(file, dataset, where + ": " + axes_path + "/" + name + " is not a hard-linked dataset (" + kind + ")");
   {
     Hid expected(H5Oopen(axes_group, name.c_str(), H5P_DEFAULT), H5Oclose);
     H5O_info_t sinfo;
     if (!expected.valid() || object_address(expected) == HADDR_UNDEF ||
         object_address(expected) != object_address(scale) || H5Oget_info2(scale, &sinfo, H5O_INFO_BASIC) < 0 ||
         sinfo.rc != 1)
-      fail(file, dataset, where + ": the attached scale is not /axes/" + dataset + "/" + name +
+      fail(file, dataset, where + ": the attached scale is not " + axes_path + "/" + name +
                               " (a table stored under another table's name?)");
   }
   const std::string tname = text_of(attrs, "transform");
@@ -443,6 +461,27 @@ Axis read_axis(const OpenFile& f, const std::string& dataset, hid_t axes_group, 
   } catch (const std::exception& e) {
     fail(file, dataset, where + ": " + e.what());
   }
+  if (version >= 2) {
+    // What a script evaluates must be what this library computes.
+    const std::string tf = text_of(attrs, "transform_formula"), inv = text_of(attrs, "inverse_formula");
+    if (tf != transform_formula(t))
+      fail(file, dataset, where + ": attribute 'transform_formula' is \"" + tf.substr(0, 80) + "\", transform " + tname +
+                              " is \"" + std::string(transform_formula(t)) + "\"");
+    if (inv != inverse_transform_formula(t))
+      fail(file, dataset, where + ": attribute 'inverse_formula' is \"" + inv.substr(0, 80) + "\", transform " +
+                              tname + " has \"" + std::string(inverse_transform_formula(t)) + "\"");
+    for (const auto& [key, mine] : {std::pair<const char*, double>{"u_first", a.u0}, {"u_step", a.du}}) {
+      const auto it = attrs.find(key);
+      if (it == attrs.end()) fail(file, dataset, where + ": missing attribute '" + key + "'");
+      const double stored = std::holds_alternative<double>(it->second)
+                                ? std::get<double>(it->second)
+                                : static_cast<double>(std::get<long long>(it->second));
+      // Equal up to rounding of the transform (another libm): 1e-12 of the u range.
+      if (!(std::abs(stored - mine) <= 1e-12 * std::abs(a.du) * (a.n - 1)))
+        fail(file, dataset, where + ": attribute '" + key + "' = " + fmt(stored) + " disagrees with the axis values (" +
+                                fmt(mine) + ")");
+    }
+  }
   // The grid must be regular in the transformed coordinate: each value must sit where the
   // regular grid in u puts it, to within 1e-9 of the local grid spacing (measured in x, so
   // that ill-conditioned transforms near their singular end, like sqrt(1-x) at x = 1, are
@@ -457,8 +496,28 @@ Axis read_axis(const OpenFile& f, const std::string& dataset, hid_t axes_group, 
   return a;
 }
 
+std::string versions_read() {
+  return "this library reads versions " + std::to_string(kOldestSchemaVersion) + " to " + std::to_string(kSchemaVersion);
+}
+
+// The file's schema version (root attribute `schema_version`; a file without it is read
+// as version 1, the layout of files written before the attribute was checked).
+long long file_version(const OpenFile& f) {
+  Hid root(H5Oopen(f.id(), "/", H5P_DEFAULT), H5Oclose);
+  if (!root.valid()) fail(f.path(), "", "cannot open the root group (corrupt file)");
+  const auto r = hdf5::read_attribute(root, "schema_version", 0);
+  if (r.status == hdf5::AttributeRead::missing) return 1;
+  if (r.status != hdf5::AttributeRead::ok || !std::holds_alternative<long long>(r.value))
+    fail(f.path(), "", "file attribute 'schema_version' is not an integer");
+  const long long v = std::get<long long>(r.value);
+  if (v < kOldestSchemaVersion || v > kSchemaVersion)
+    fail(f.path(), "", "schema_version is " + std::to_string(v) + ", " + versions_read());
+  return v;
+}
+
 std::vector<std::string> list_tables_in(const OpenFile& f) {
   const auto& file = f.path();
+  const long long version = file_version(f);
   H5G_info_t ginfo;
   if (H5Gget_info(f.id(), &ginfo) < 0) fail(file, "", "cannot list its root group (corrupt file)");
   if (ginfo.nlinks > 4096) fail(file, "", "root group has " + std::to_string(ginfo.nlinks) + " entries (at most 4096)");
@@ -470,13 +529,19 @@ std::vector<std::string> list_tables_in(const OpenFile& f) {
     if (H5Lget_name_by_idx(f.id(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT) != len)
       fail(file, "", "root group entry " + std::to_string(i) + " has an unreadable name");
     name.resize(static_cast<std::size_t>(len));
-    check_name(file, name == "axes" ? std::string("x") : name);
+    const bool v1 = version == 1;
+    check_name(file, v1 && name == "axes" ? std::string("x") : name);
     std::string kind;
     if (!hdf5::is_hard_link(f.id(), name.c_str(), &kind))
-      fail(file, name, "is " + kind + "; a table must be a hard-linked dataset");
+      fail(file, name, "is " + kind + "; a table must be a hard-linked " + (v1 ? "dataset" : "group"));
     H5O_info_t oinfo;
     if (H5Oget_info_by_name2(f.id(), name.c_str(), &oinfo, H5O_INFO_BASIC, H5P_DEFAULT) < 0)
       fail(file, name, "cannot read its object header (corrupt file)");
+    if (!v1) {
+      if (oinfo.type != H5O_TYPE_GROUP) fail(file, name, "is not a group (a version 2 table is the group /" + name + ")");
+      names.push_back(std::move(name));
+      continue;
+    }
     if (name == "axes") {
       if (oinfo.type != H5O_TYPE_GROUP) fail(file, "", "/axes is not a group");
       continue;
@@ -487,42 +552,82 @@ std::vector<std::string> list_tables_in(const OpenFile& f) {
   return names;
 }
 
+// A hard-linked group with exactly one hard link (not shared with another table).
+Hid open_own_group(const OpenFile& f, const std::string& dataset, hid_t parent, const std::string& name,
+                   const std::string& path) {
+  std::string kind;
+  if (!hdf5::is_hard_link(parent, name.c_str(), &kind)) {
+    if (kind == "missing" && path == "/" + dataset) fail(f.path(), dataset, "no such dataset");
+    fail(f.path(), dataset, path + " is not a hard-linked group (" + kind + ")");
+  }
+  H5O_info_t info;
+  if (H5Oget_info_by_name2(parent, name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT) < 0)
+    fail(f.path(), dataset, "cannot read the object header of " + path + " (corrupt file)");
+  if (info.type != H5O_TYPE_GROUP) fail(f.path(), dataset, path + " is not a group");
+  if (info.rc != 1) fail(f.path(), dataset, path + " has more than one hard link (shared with another table)");
+  Hid g(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), H5Gclose);
+  if (!g.valid()) fail(f.path(), dataset, "cannot open " + path);
+  return g;
+}
+
 LoadedTable load_table_in(const OpenFile& f, const std::string& dataset) {
   const auto& file = f.path();
   check_name(file, dataset);
+  const long long file_v = file_version(f);
+  // Version 2: the values /NAME/NAME, axes beside them in /NAME. Version 1: the values
+  // /NAME, axes in /axes/NAME.
+  Hid table_group;
+  if (file_v >= 2) table_group = open_own_group(f, dataset, f.id(), dataset, "/" + dataset);
+  const hid_t values_parent = file_v >= 2 ? table_group.get() : f.id();
   std::string kind;
-  if (!hdf5::is_hard_link(f.id(), dataset.c_str(), &kind)) {
+  if (!hdf5::is_hard_link(values_parent, dataset.c_str(), &kind)) {
     if (kind == "missing") fail(file, dataset, "no such dataset");
     fail(file, dataset, "is " + kind + "; a table must be a hard-linked dataset");
   }
   H5O_info_t oinfo;
-  if (H5Oget_info_by_name2(f.id(), dataset.c_str(), &oinfo, H5O_INFO_BASIC, H5P_DEFAULT) < 0)
+  if (H5Oget_info_by_name2(values_parent, dataset.c_str(), &oinfo, H5O_INFO_BASIC, H5P_DEFAULT) < 0)
     fail(file, dataset, "cannot read its object header (corrupt file)");
   if (oinfo.type != H5O_TYPE_DATASET) fail(file, dataset, "is not a dataset");
   // One name per object: a table hard-linked under a second name (one table posing as
   // another) is refused, as is an aliased axis group or axis.
   if (oinfo.rc != 1) fail(file, dataset, "has " + std::to_string(oinfo.rc) + " hard links (a table has exactly one)");
-  Hid d(H5Dopen2(f.id(), dataset.c_str(), H5P_DEFAULT), H5Dclose);
+  Hid d(H5Dopen2(values_parent, dataset.c_str(), H5P_DEFAULT), H5Dclose);
   if (!d.valid()) fail(file, dataset, "cannot open it as a dataset");
 
   LoadedTable out;
   out.info.file = file.string();
   out.info.dataset = dataset;
-  out.info.attributes = read_schema_attributes(file, dataset, "", d, kDatasetRules);
+  out.info.attributes = read_schema_attributes(file, dataset, "", d, kDatasetRules, file_v);
   const auto& attrs = out.info.attributes;
 
   auto sv = attrs.find("schema_version");
   if (sv == attrs.end()) fail(file, dataset, "missing attribute 'schema_version' (not a brdftab table?)");
   const long long version = std::get<long long>(sv->second);
-  if (version != kSchemaVersion)
-    fail(file, dataset, "schema_version is " + std::to_string(version) + ", this library reads version " +
-                            std::to_string(kSchemaVersion));
+  if (version < kOldestSchemaVersion || version > kSchemaVersion)
+    fail(file, dataset, "schema_version is " + std::to_string(version) + ", " + versions_read());
+  if (version != file_v)
+    fail(file, dataset, "schema_version is " + std::to_string(version) + " but the file's is " + std::to_string(file_v));
 
   Interpolation interp;
   try {
     interp = interpolation_from_name(text_of(attrs, "interpolation"));
   } catch (const std::exception& e) {
     fail(file, dataset, std::string("attribute 'interpolation': ") + e.what());
+  }
+  if (version >= 2) {
+    // The spelled-out scheme must be this library's (what a script computes is what we compute).
+    const InterpolationScheme scheme = interpolation_scheme(interp);
+    auto points = attrs.find("interpolation_points");
+    if (points == attrs.end() || std::get<long long>(points->second) != scheme.points)
+      fail(file, dataset, "attribute 'interpolation_points' is missing or disagrees with interpolation " +
+                              text_of(attrs, "interpolation"));
+    for (const auto& [key, mine] : {std::pair<const char*, std::string_view>{"interpolation_grid_coordinate",
+                                                                             scheme.grid_coordinate},
+                                    {"interpolation_first_node", scheme.first_node},
+                                    {"interpolation_weights", scheme.weights}})
+      if (text_of(attrs, key) != mine)
+        fail(file, dataset, std::string("attribute '") + key + "' is missing or disagrees with interpolation " +
+                                text_of(attrs, "interpolation") + " (expected \"" + std::string(mine) + "\")");
   }
 
   Hid type(H5Dget_type(d), H5Tclose);
@@ -550,24 +655,34 @@ LoadedTable load_table_in(const OpenFile& f, const std::string& dataset) {
   }
   check_storage(f, dataset, "", d, total, tsize);
 
-  // /axes/<dataset> must be a hard-linked group.
-  if (!hdf5::is_hard_link(f.id(), "axes", &kind)) fail(file, dataset, "/axes is not a hard-linked group (" + kind + ")");
-  Hid axes_root(H5Gopen2(f.id(), "axes", H5P_DEFAULT), H5Gclose);
-  if (!axes_root.valid()) fail(file, dataset, "cannot open /axes");
-  if (!hdf5::is_hard_link(axes_root, dataset.c_str(), &kind))
-    fail(file, dataset, "/axes/" + dataset + " is not a hard-linked group (" + kind + ")");
-  Hid axes_group(H5Gopen2(axes_root, dataset.c_str(), H5P_DEFAULT), H5Gclose);
-  if (!axes_group.valid()) fail(file, dataset, "cannot open /axes/" + dataset);
-  {
+  // Version 2: the axes are in the table's group /<dataset>, which holds nothing else.
+  // Version 1: /axes/<dataset> must be a hard-linked group.
+  std::string axes_path = "/" + dataset;
+  Hid axes_group_v1;
+  if (version == 1) {
+    if (!hdf5::is_hard_link(f.id(), "axes", &kind)) fail(file, dataset, "/axes is not a hard-linked group (" + kind + ")");
+    Hid axes_root(H5Gopen2(f.id(), "axes", H5P_DEFAULT), H5Gclose);
+    if (!axes_root.valid()) fail(file, dataset, "cannot open /axes");
+    if (!hdf5::is_hard_link(axes_root, dataset.c_str(), &kind))
+      fail(file, dataset, "/axes/" + dataset + " is not a hard-linked group (" + kind + ")");
+    axes_group_v1 = Hid(H5Gopen2(axes_root, dataset.c_str(), H5P_DEFAULT), H5Gclose);
+    if (!axes_group_v1.valid()) fail(file, dataset, "cannot open /axes/" + dataset);
     H5O_info_t ginfo;
-    if (H5Oget_info2(axes_group, &ginfo, H5O_INFO_BASIC) < 0 || ginfo.rc != 1)
+    if (H5Oget_info2(axes_group_v1, &ginfo, H5O_INFO_BASIC) < 0 || ginfo.rc != 1)
       fail(file, dataset, "/axes/" + dataset + " has more than one hard link (axes shared with another table)");
+    axes_path = "/axes/" + dataset;
+  } else {
+    H5G_info_t ginfo;
+    if (H5Gget_info(table_group, &ginfo) < 0 || ginfo.nlinks != static_cast<hsize_t>(rank) + 1)
+      fail(file, dataset, "/" + dataset + " must hold exactly the table and its " + std::to_string(rank) + " axes");
   }
+  const hid_t axes_group = version == 1 ? axes_group_v1.get() : table_group.get();
 
   const std::vector<Hid> scales = resolve_axes(f, dataset, d, rank);
   std::vector<Axis> axes;
   for (int dim = 0; dim < rank; ++dim)
-    axes.push_back(read_axis(f, dataset, axes_group, scales[dim], static_cast<unsigned>(dim), dims[dim]));
+    axes.push_back(read_axis(f, dataset, axes_group, axes_path, version, scales[dim], static_cast<unsigned>(dim),
+                             dims[dim]));
   for (int i = 0; i < rank; ++i)
     for (int j = i + 1; j < rank; ++j)
       if (axes[i].name == axes[j].name) fail(file, dataset, "two dimensions share the axis '" + axes[i].name + "'");
@@ -596,7 +711,7 @@ auto with_bytes(const std::filesystem::path& file, std::span<const unsigned char
 std::map<std::string, Attribute> file_attributes_in(const OpenFile& f) {
   Hid root(H5Oopen(f.id(), "/", H5P_DEFAULT), H5Oclose);
   if (!root.valid()) fail(f.path(), "", "cannot open the root group (corrupt file)");
-  return read_schema_attributes(f.path(), "", "file ", root, kFileRules);
+  return read_schema_attributes(f.path(), "", "file ", root, kFileRules, file_version(f));
 }
 
 }  // namespace

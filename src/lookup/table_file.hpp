@@ -22,7 +22,7 @@
 //     value is read); at most kMaxTableValues values; axes resolved from a
 //     DIMENSION_LIST attribute whose type (variable-length object references) and length
 //     (exactly the rank, one scale each) are checked first, and which must point to
-//     /axes/<dataset>/<axis name>; only the attributes the schema names are read, each
+//     /<dataset>/<axis name> (version 2; /axes/<dataset>/<axis name> in version 1); only the attributes the schema names are read, each
 //     checked for type and range; any HDF5 error stops the load.
 //  4. Values: strictly increasing axes regular in their transform, matching shapes,
 //     finite values. Any failure is a TableFileError naming the file, the dataset and
@@ -45,7 +45,13 @@
 
 namespace brdftab::lookup {
 
-inline constexpr long long kSchemaVersion = 1;
+// Table files: the writer writes schema version kSchemaVersion (2: each table in its own
+// group /NAME with the values /NAME/NAME and its axes /NAME/<axis> beside them,
+// variable-length UTF-8 strings, the interpolation and transforms spelled out; README
+// "Table file format"). The reader reads versions kOldestSchemaVersion .. kSchemaVersion
+// (1: values /NAME, axes /axes/NAME/<axis>, fixed-length strings), and refuses others.
+inline constexpr long long kSchemaVersion = 2;
+inline constexpr long long kOldestSchemaVersion = 1;
 // Caps (tables are kilobytes to megabytes): a file larger than this is refused unread, a
 // dataset declaring more values is refused before anything is allocated.
 inline constexpr std::size_t kMaxTableFileBytes = std::size_t(256) << 20;  // 256 MiB
@@ -96,8 +102,8 @@ bool foreign_allowed_by_environment();
 // TableFileError if the file cannot be read (missing, not regular, too large).
 DigestStatus check_file_digest(const std::filesystem::path& file);
 
-// Names of the table datasets in a file (the values, not the axis scales). Every root
-// entry other than /axes must be a hard-linked dataset, else TableFileError.
+// Names of the tables in a file. Version 2: every root entry must be a hard-linked group
+// (the table's); version 1: a hard-linked dataset, or the group /axes. Else TableFileError.
 std::vector<std::string> list_tables(const std::filesystem::path& file, const OpenOptions& options = {});
 LoadedTable load_table(const std::filesystem::path& file, const std::string& dataset, const OpenOptions& options = {});
 // File-level attributes the schema names (schema_version, generator, created_utc).

@@ -25,6 +25,12 @@ class TableSet {
   const LoadedTable& get(const std::string& file, const std::string& dataset);
   const Table& table(const std::string& file, const std::string& dataset) { return get(file, dataset).table; }
   std::size_t loaded_count() const;
+  // `eval --dataset NAME`: from now on a request for another table of the file that holds
+  // NAME is answered by NAME, provided it has the same axes (names, in order) and the same
+  // `quantity` (a compact variant of a precise table, say); otherwise that request throws
+  // TableFileError saying how they differ. substituted() tells whether NAME answered any request.
+  void substitute(std::string dataset);
+  bool substituted() const;
   const OpenOptions& options() const { return options_; }
 
  private:
@@ -33,6 +39,8 @@ class TableSet {
   mutable std::mutex mutex_;
   std::map<std::string, std::unique_ptr<LoadedTable>> loaded_;
   std::map<std::string, VerifiedFile> files_;  // each file read and verified once
+  std::string substitute_;
+  bool substituted_ = false;
 };
 
 }  // namespace brdftab::lookup

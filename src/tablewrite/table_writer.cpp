@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 #include "lookup/hdf5_util.hpp"
+#include "lookup/interpolation_scheme.hpp"
 #include "lookup/table_digest.hpp"
 #include "lookup/table_file.hpp"
 #include "tablewrite/temp_file.hpp"
@@ -42,13 +43,19 @@ std::string utc_now() {
   return buf;
 }
 
-void write_dataset(hid_t file, hid_t axes_group, const DatasetToWrite& ds, const std::string& created) {
+// Schema version 2: the table NAME is the group /NAME holding the values /NAME/NAME and
+// its axes /NAME/<axis> as dimension scales beside them (netCDF-4, hence xarray, finds
+// dimension scales only in a variable's own group or its parents).
+void write_dataset(hid_t file, const DatasetToWrite& ds, const std::string& created) {
   const lookup::Table& t = ds.table;
   const std::string& name = t.name();
   if (name.empty() || name.size() > 255 || name.find('/') != std::string::npos || name == "axes" || name == "." ||
       name == "..")
     throw WriteError("invalid dataset name '" + name + "'");
   const int rank = t.rank();
+  for (int d = 0; d < rank; ++d)
+    if (t.axis(d).name == name)
+      throw WriteError("dataset " + name + ": an axis may not have the name of its dataset");
   hsize_t dims[lookup::kMaxRank];
   for (int d = 0; d < rank; ++d) dims[d] = static_cast<hsize_t>(t.axis(d).n);
   if (t.size() > lookup::kMaxTableValues)
@@ -65,19 +72,19 @@ void write_dataset(hid_t file, hid_t axes_group, const DatasetToWrite& ds, const
       idx[d] = 0;
     }
   }
+  Hid group(H5Gcreate2(file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!group.valid()) throw WriteError("cannot create group /" + name);
   const bool f32 = t.storage() == lookup::Storage::float32;
   Hid space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
   if (!space.valid()) throw WriteError("cannot create the dataspace of " + name);
-  Hid dset(H5Dcreate2(file, name.c_str(), f32 ? H5T_IEEE_F32LE : H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
+  Hid dset(H5Dcreate2(group, name.c_str(), f32 ? H5T_IEEE_F32LE : H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
                       H5P_DEFAULT),
            H5Dclose);
   if (!dset.valid()) throw WriteError("cannot create dataset " + name);
   check(H5Dwrite(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
         "cannot write dataset " + name);
 
-  // Axes as dimension scales in /axes/<dataset>/<axis>.
-  Hid group(H5Gcreate2(axes_group, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  if (!group.valid()) throw WriteError("cannot create axes group for " + name);
+  // Axes as dimension scales in /<dataset>/<axis>, with the transform spelled out.
   for (int d = 0; d < rank; ++d) {
     const lookup::Axis& a = t.axis(d);
     std::vector<double> x(a.n);
@@ -91,17 +98,25 @@ void write_dataset(hid_t file, hid_t axes_group, const DatasetToWrite& ds, const
     check(H5Dwrite(ad, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, x.data()), "cannot write axis " + a.name);
     check(H5DSset_scale(ad, a.name.c_str()), "cannot make axis " + a.name + " a dimension scale");
     check(H5DSattach_scale(dset, ad, static_cast<unsigned>(d)), "cannot attach axis " + a.name);
-    check(H5DSset_label(dset, static_cast<unsigned>(d), a.name.c_str()), "cannot label dimension " + a.name);
     hdf5::write_attribute(ad, "name", a.name);
     hdf5::write_attribute(ad, "transform", std::string(lookup::transform_name(a.transform)));
+    hdf5::write_attribute(ad, "transform_formula", std::string(lookup::transform_formula(a.transform)));
+    hdf5::write_attribute(ad, "inverse_formula", std::string(lookup::inverse_transform_formula(a.transform)));
     hdf5::write_attribute(ad, "units", a.units);
     hdf5::write_attribute(ad, "scale", a.scale);
+    hdf5::write_attribute(ad, "u_first", a.u0);
+    hdf5::write_attribute(ad, "u_step", a.du);
   }
 
   std::map<std::string, AttributeValue> attrs = ds.attributes;
   attrs["schema_version"] = lookup::kSchemaVersion;
   attrs["quantity"] = ds.quantity;
   attrs["interpolation"] = std::string(lookup::interpolation_name(t.interpolation()));
+  const lookup::InterpolationScheme scheme = lookup::interpolation_scheme(t.interpolation());
+  attrs["interpolation_points"] = scheme.points;
+  attrs["interpolation_grid_coordinate"] = std::string(scheme.grid_coordinate);
+  attrs["interpolation_first_node"] = std::string(scheme.first_node);
+  attrs["interpolation_weights"] = std::string(scheme.weights);
   attrs["storage"] = std::string(lookup::storage_name(t.storage()));
   attrs.try_emplace("source_commit", std::string(BRDFTAB_SOURCE_COMMIT));
   attrs.try_emplace("created_utc", created);
@@ -129,11 +144,7 @@ std::vector<unsigned char> build_hdf5_image(const std::vector<DatasetToWrite>& d
   fattrs["schema_version"] = lookup::kSchemaVersion;
   fattrs.try_emplace("created_utc", created);
   for (const auto& [k, v] : fattrs) hdf5::write_attribute(file, k, v);
-  {
-    Hid axes(H5Gcreate2(file, "axes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-    if (!axes.valid()) throw WriteError("cannot create group /axes");
-    for (const auto& ds : datasets) write_dataset(file, axes, ds, created);
-  }
+  for (const auto& ds : datasets) write_dataset(file, ds, created);
   check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush the in-memory file");
   const ssize_t size = H5Fget_file_image(file, nullptr, 0);
   if (size <= 8) throw WriteError("cannot get the file image");

@@ -24,9 +24,11 @@ namespace brdftab::tablewrite {
 
 using AttributeValue = lookup::Attribute;
 
-// One dataset: the table (axes + values) and its attributes. The writer adds the
-// standard ones (schema_version, quantity, interpolation, storage, source_commit,
-// created_utc) itself; the generator supplies domain, max_abs_error, max_rel_error,
+// One dataset: the table (axes + values) and its attributes. The writer lays it out as
+// schema version 2 (group /NAME: values /NAME/NAME, axes /NAME/<axis> as dimension scales
+// with transform_formula, inverse_formula, scale, u_first, u_step; README "Table file
+// format") and adds the standard attributes (schema_version, quantity, interpolation and
+// its spelled-out scheme, storage, source_commit, created_utc) itself; the generator supplies domain, max_abs_error, max_rel_error,
 // generator, generator_version, method, and anything else it measured.
 struct DatasetToWrite {
   lookup::Table table;
