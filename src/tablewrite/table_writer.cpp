@@ -34,7 +34,8 @@ namespace {
 
 std::atomic<std::size_t> g_fail_after{std::numeric_limits<std::size_t>::max()};
 
-// The created_utc timestamp: only when asked (reproducible output, docs/scenes.md):
+// The created_utc timestamp (and with it source_commit): only when asked (reproducible
+// output, docs/scenes.md):
 // SOURCE_DATE_EPOCH (seconds since 1970, the reproducible-builds convention) or
 // BRDFTAB_TIMESTAMP=now (the wall clock). Otherwise "" and no attribute is written.
 std::string creation_timestamp() {
@@ -126,8 +127,12 @@ void write_dataset(hid_t file, hid_t axes_group, const DatasetToWrite& ds, const
   attrs["quantity"] = ds.quantity;
   attrs["interpolation"] = std::string(lookup::interpolation_name(t.interpolation()));
   attrs["storage"] = std::string(lookup::storage_name(t.storage()));
-  attrs.try_emplace("source_commit", std::string(BRDFTAB_SOURCE_COMMIT));
-  if (!created.empty()) attrs.try_emplace("created_utc", created);
+  // Provenance that changes with every build or run (the source commit, the time) only in
+  // stamped runs: byte-identical files otherwise (docs/scenes.md, "reproducible").
+  if (!created.empty()) {
+    attrs.try_emplace("source_commit", std::string(BRDFTAB_SOURCE_COMMIT));
+    attrs.try_emplace("created_utc", created);
+  }
   for (const auto& [k, v] : attrs) hdf5::write_attribute(dset, k, v);
 }
 

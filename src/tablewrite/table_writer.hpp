@@ -25,8 +25,8 @@ namespace brdftab::tablewrite {
 using AttributeValue = lookup::Attribute;
 
 // One dataset: the table (axes + values) and its attributes. The writer adds the
-// standard ones (schema_version, quantity, interpolation, storage, source_commit,
-// created_utc) itself; the generator supplies domain, max_abs_error, max_rel_error,
+// standard ones (schema_version, quantity, interpolation, storage; source_commit and
+// created_utc only when SOURCE_DATE_EPOCH or BRDFTAB_TIMESTAMP=now is set) itself; the generator supplies domain, max_abs_error, max_rel_error,
 // generator, generator_version, method, and anything else it measured.
 struct DatasetToWrite {
   lookup::Table table;
