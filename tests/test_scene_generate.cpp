@@ -176,3 +176,38 @@ TEST_CASE("SceneSet: lazy, one handle per material, values agree with the exact 
   CHECK_THROWS_AS(scene.material("silver"), lookup::TableFileError);
   fs::remove_all(d);
 }
+
+TEST_CASE("SceneSet: an LS material's slices satisfy k_d = 2 int A mu dmu and match the default H grid") {
+  const fs::path d = scratch("scene_ls");
+  std::ofstream(d / "scene.json") << R"({"materials": [{"name": "milk", "model": "ls", "c": 0.9}],
+                                         "families": {"ls": {"form": "slices"}, "hfunc": {"form": "slices"}}})";
+  auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + (d / "out").string() + "'");
+  REQUIRE_MESSAGE(r.status == 0, r.err);
+  lookup::SceneSet scene(d / "out");
+  const auto& milk = scene.material("milk");
+  CHECK(scene.loaded_tables() == 4);  // A(mu), H^(0), H^(1), H^(2)
+  CHECK(milk.ls_c() == 0.9);
+  // The identity k_d = 2 int_0^1 A(mu) mu dmu: k_d is the solver's spherical albedo (stored
+  // with the slice), the integral a Gauss-Legendre rule over the A(mu) slice (in t = mu^(1/4),
+  // where A is smooth: mu = t^4, dmu = 4 t^3 dt).
+  static const double x[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                              0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+  static const double w[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+                              0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  double integral = 0;
+  for (int panel = 0; panel < 8; ++panel)
+    for (int i = 0; i < 8; ++i) {
+      const double t = (panel + 0.5 + 0.5 * x[i]) / 8, mu = t * t * t * t;
+      integral += w[i] * 0.5 / 8 * 2 * milk.ls_albedo(mu) * mu * 4 * t * t * t;
+    }
+  CHECK(std::abs(integral - milk.ls_kd()) < 1e-6);
+  // H slices against the committed default precise (c, mu) tables (another grid, another
+  // fill): within the two tables' stated errors (~1e-8).
+  lookup::TableSet defaults(fs::path(BRDFTAB_SOURCE_DIR) / "tables");
+  for (int k = 0; k < 3; ++k)
+    for (double mu : {0.0, 0.01, 0.3, 0.77, 1.0}) {
+      const double grid = defaults.table("hfunc.h5", "hfunc_ls" + std::to_string(k)).eval2(0.9, mu);
+      CHECK(std::abs(milk.h(k, mu) - grid) < 1e-7);
+    }
+  fs::remove_all(d);
+}
