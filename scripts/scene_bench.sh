@@ -25,3 +25,8 @@ for n in 1 10 100 1000; do
   "$exe" info --markdown "$d"/*.h5 | awk -F'|' 'NR > 2 { split($2, f, "."); fam = f[1]; gsub(/ /, "", fam);
       v = $8 + 0; if (v > m[fam]) m[fam] = v } END { for (k in m) printf "max stored abs error %s: %.2e\n", k, m[k] }'
 done
+echo "== the generic default tables (reference)"
+"$exe" info --markdown tables/smith_gbeckmann.h5 tables/ghs_sigma_rel.h5 tables/hfunc.h5 tables/ls.h5 tables/fresnel.h5 |
+  awk -F'|' 'NR > 2 && $3 ~ /g1_precise|sigma_rel2_grid|hfunc_ls[012] |ls_kd|ls_albedo |fresnel/ {
+               split($2, f, "."); fam = f[1]; gsub(/ /, "", fam); v = $8 + 0; if (v > m[fam]) m[fam] = v }
+             END { for (k in m) printf "max stored abs error %s (generic, the grid form datasets): %.2e\n", k, m[k] }'
