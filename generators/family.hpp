@@ -11,19 +11,33 @@
 //   Config test_config();                                      // cheap (< 1 s), for the tests
 //   Config narrowed(Config);                                   // every range narrower: smaller tables
 //   inline constexpr const char* kSummary = "...";             // one line for --help and info
+// and optionally (a family without it compiles and links unchanged; see
+// docs/adding-a-family.md "Scene hook"):
+//   std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>&, const CostPolicy&);
 // and its schema in src/lookup/K_schema.hpp (namespace brdftab::schema::K, kFile, kDatasets).
 // generators/family_list.hpp lists the families; generators/registry.cpp instantiates them.
+#include <functional>
 #include <memory>
+#include <optional>
 #include <span>
+#include <type_traits>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "generators/generate_context.hpp"
+#include "generators/scene.hpp"
 #include "generators/table_builder.hpp"
 
 namespace brdftab::gen {
+
+// A family's answer to a scene in manifest terms (Family::scene_entry).
+struct SceneEntry {
+  std::optional<nlohmann::json> entry;  // the family entry to generate; none: scalars only
+  std::vector<MaterialUse> uses;
+  FormChoice choice;
+};
 
 class Family {
  public:
@@ -48,7 +62,58 @@ class Family {
   virtual nlohmann::json normalized(const nlohmann::json& entry) const = 0;
   // The datasets its files may hold (lookup/<name>_schema.hpp).
   virtual std::span<const schema::DatasetSchema> datasets() const = 0;
+  // The optional scene hook: what this family builds for a scene's materials (nullopt: the
+  // family has no hook, or no material of the scene needs it). Throws SceneError.
+  virtual std::optional<SceneEntry> scene_entry(const std::vector<SceneMaterial>&, const CostPolicy&) const {
+    return std::nullopt;
+  }
+  virtual bool has_scene_hook() const { return false; }
 };
+
+// For scene hooks: bytes and estimated seconds of building `c` (a dry run: no values are
+// computed), or why it cannot be built (e.g. above the pre-flight size limit).
+template <class Config>
+FormEstimate dry_estimate(const Config& c, std::vector<BuiltTable> (*build)(const Config&, const GenerateContext&)) {
+  GenerateContext ctx;
+  ctx.dry_run = true;
+  FormEstimate e;
+  try {
+    for (const auto& t : build(c, ctx)) {
+      ++e.tables;
+      e.bytes += t.summary.bytes;
+      e.seconds += t.summary.seconds;
+    }
+  } catch (const ManifestError& err) {
+    e.infeasible = err.what();
+  }
+  return e;
+}
+
+// The absence of a family's scene hook: unqualified from_scene(materials, policy) inside
+// namespace gen::K finds K::from_scene if the family declares one (a non-template, preferred),
+// else this template, whose return type says "no hook". Never called.
+struct NoSceneHook {};
+template <class M, class P>
+NoSceneHook from_scene(const M&, const P&) {
+  return {};
+}
+
+template <class Config>
+using SceneHook = std::function<std::optional<SceneConfig<Config>>(const std::vector<SceneMaterial>&, const CostPolicy&)>;
+
+// The hook as a std::function, or empty when `probe` (a generic lambda calling from_scene)
+// resolves to the NoSceneHook fallback.
+template <class Config, class Probe>
+SceneHook<Config> scene_hook(Probe probe) {
+  using R = std::invoke_result_t<Probe, const std::vector<SceneMaterial>&, const CostPolicy&>;
+  if constexpr (std::is_same_v<R, NoSceneHook>) {
+    return {};
+  } else {
+    static_assert(std::is_same_v<R, std::optional<SceneConfig<Config>>>,
+                  "from_scene must return std::optional<SceneConfig<Config>>");
+    return SceneHook<Config>(probe);
+  }
+}
 
 // The adapter: one instance per family key (registry.cpp).
 template <class Config>
@@ -62,6 +127,7 @@ struct FamilyParts {
   std::vector<BuiltTable> (*build)(const Config&, const GenerateContext&);
   Config (*test_config)();
   Config (*narrowed)(Config);
+  SceneHook<Config> from_scene = {};  // optional
 };
 
 template <class Config>
@@ -80,6 +146,17 @@ class FamilyOf final : public Family {
   nlohmann::json narrowed_test_entry() const override { return p_.to_json(p_.narrowed(p_.test_config())); }
   nlohmann::json normalized(const nlohmann::json& entry) const override { return p_.to_json(p_.read_config(entry)); }
   std::span<const schema::DatasetSchema> datasets() const override { return p_.datasets; }
+  bool has_scene_hook() const override { return static_cast<bool>(p_.from_scene); }
+  std::optional<SceneEntry> scene_entry(const std::vector<SceneMaterial>& m, const CostPolicy& policy) const override {
+    if (!p_.from_scene) return std::nullopt;
+    auto sc = p_.from_scene(m, policy);
+    if (!sc) return std::nullopt;
+    SceneEntry e;
+    if (sc->config) e.entry = p_.to_json(*sc->config);
+    e.uses = std::move(sc->uses);
+    e.choice = std::move(sc->choice);
+    return e;
+  }
 
  private:
   FamilyParts<Config> p_;
@@ -92,9 +169,11 @@ const Family* find_family(const std::string& name);
 }  // namespace brdftab::gen
 
 // Defines K::make_family() inside namespace brdftab::gen::K from the family's parts; a part
-// missing or of the wrong type is a compile error here.
+// missing or of the wrong type is a compile error here. The scene hook K::from_scene is
+// picked up when declared (before this line), else the family has none.
 #define BRDFTAB_DEFINE_FAMILY(K)                                                                         \
   std::unique_ptr<::brdftab::gen::Family> make_family() {                                                \
     return std::make_unique<::brdftab::gen::FamilyOf<Config>>(::brdftab::gen::FamilyParts<Config>{       \
-        #K, kSummary, ::brdftab::schema::K::kFile, ::brdftab::schema::K::kDatasets, &read_config, &to_json, &build, &test_config, &narrowed}); \
+        #K, kSummary, ::brdftab::schema::K::kFile, ::brdftab::schema::K::kDatasets, &read_config, &to_json, &build, &test_config, &narrowed, \
+        ::brdftab::gen::scene_hook<Config>([](const auto& m, const auto& p) { return from_scene(m, p); })}); \
   }

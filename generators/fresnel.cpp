@@ -54,6 +54,10 @@ nlohmann::json to_json(const Config& c) {
 
 namespace {
 
+// Generation cost on one core (cost model and plan, docs/scenes.md): F_dr closed form in
+// 50-digit arithmetic ~155 us per value, F_avg Gauss-Kronrod ~14 us (more near n = 1, k = 0).
+constexpr double kDrValueSeconds = 155e-6, kAvgValueSeconds = 14e-6;
+
 constexpr const char* kSource =
     "Holzschuch & Pacanowski, A two-scale microfacet reflectance model combining reflection and diffraction, "
     "Sec. 3.2.1 (Fresnel, Eq. 11-13); Kulla & Conty 2017 (F_avg)";
@@ -74,6 +78,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
     spec.generator = "fresnel";
     spec.error_rows = 1;
     spec.error_per_row = c.dr_error_points;
+    spec.cost_row_seconds = 0;
+    spec.cost_value_seconds = kDrValueSeconds;
     // A 1-D table is one row: spread its independent values over threads here.
     const RowFunction row = pointwise_parallel_row([](double eta) { return numerics::fresnel_dr(eta); });
     BuiltTable t = build_table(spec, row, ctx);
@@ -97,6 +103,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
     spec.generator = "fresnel";
     spec.error_rows = c.avg_error_rows;
     spec.error_per_row = c.avg_error_per_row;
+    spec.cost_row_seconds = 0;
+    spec.cost_value_seconds = kAvgValueSeconds;
     const RowFunction row = [](std::span<const double> outer, std::span<const double> ks, std::span<double> out) {
       for (std::size_t j = 0; j < ks.size(); ++j) out[j] = numerics::fresnel_avg_conductor(outer[0], ks[j]);
     };

@@ -1,6 +1,7 @@
 #pragma once
 // Table family fresnel: diffuse Fresnel reflectance F_dr(eta) and the conductor Fresnel
 // average F_avg(n, k) (see fresnel.cpp; schema in lookup/fresnel_schema.hpp).
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -30,5 +31,9 @@ nlohmann::json to_json(const Config& c);
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx);
 Config test_config();
 Config narrowed(Config c);
+
+// Scene hook (generators/fresnel_scene.cpp): F_dr(eta) and F_avg(n, k) of each material as
+// exact scalars in the scene index (no table), or the grids with override "grid".
+std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);
 
 }  // namespace brdftab::gen::fresnel

@@ -21,6 +21,12 @@ struct GenerateContext {
   // Mixed into every table's off-grid error-point seed: 0 reproduces the stored error;
   // another value re-measures the error on a fresh point set (conformance test).
   unsigned error_seed = 0;
+  // Dry run (plan, cost model): build_table checks each spec and returns its shape and
+  // bytes with zero values and an estimated time (timed sample of the row function), no
+  // fill and no error measurement.
+  bool dry_run = false;
+  // Written as the file-level attribute content_key (generators/content_key.hpp).
+  std::string content_key;
   void report(const std::string& stage, double fraction) const {
     if (progress) progress->update(stage, fraction);
   }
@@ -36,7 +42,7 @@ struct TableSummary {
   std::size_t bytes = 0;  // bytes of values
   double max_abs_error = 0, max_rel_error = 0;  // measured off-grid
   std::size_t error_samples = 0;
-  double seconds = 0;  // fill + measurement
+  double seconds = 0;  // fill + measurement (dry run: the estimate)
 };
 
 }  // namespace brdftab::gen

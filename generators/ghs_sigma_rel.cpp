@@ -41,6 +41,10 @@ constexpr const char* kMethod =
     "28-point Gauss-Legendre on panels [0,a],[a,2a],[2a,4a],...,pi, a = 1-s (a = 1/B once 1-s < 1e-8/max(1,B)); "
     "agrees with the polar form (long double) to ~1e-15";
 constexpr double kBDomainLo = 1e-8, kBDomainHi = 1e8;  // manifest limits on B
+// Generation cost on one core (cost model, docs/scenes.md), from timed rows: the grid's row
+// sets up the quadrature at (B, s) once and costs ~4 us per c; a material value sets up its
+// own (B, s) (~5 us).
+constexpr double kGridRowSeconds = 20e-6, kGridValueSeconds = 4e-6, kMaterialValueSeconds = 5e-6;
 
 lookup::Storage read_storage(EntryReader& r, const std::string& fallback) {
   return r.choice("precision", fallback, {"float32", "float64"}) == "float32" ? lookup::Storage::float32
@@ -150,6 +154,8 @@ BuiltTable build_grid(const Config& g, const GenerateContext& ctx) {
   spec.generator = "ghs_sigma_rel";
   spec.error_rows = g.error_rows;
   spec.error_per_row = g.error_per_row;
+  spec.cost_row_seconds = kGridRowSeconds;
+  spec.cost_value_seconds = kGridValueSeconds;
   const double w_scale = g.w_scale;
   const RowFunction row = [w_scale](std::span<const double> outer, std::span<const double> cs, std::span<double> out) {
     const double B = outer[0];
@@ -181,6 +187,9 @@ BuiltTable build_material(const Material& m, const Config& c, const GenerateCont
   spec.generator = "ghs_sigma_rel";
   spec.error_rows = 16;
   spec.error_per_row = 256;
+  spec.cost_class = "material";
+  spec.cost_row_seconds = 0;
+  spec.cost_value_seconds = kMaterialValueSeconds;
   const double w_scale = c.w_scale;
   const RowFunction row = [m, w_scale](std::span<const double>, std::span<const double> ws, std::span<double> out) {
     for (std::size_t j = 0; j < ws.size(); ++j)

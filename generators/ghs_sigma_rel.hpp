@@ -3,6 +3,7 @@
 // Pacanowski, Eq. 23-26, Sec. 5.2.3), see ghs_sigma_rel.cpp; schema and the derived maps
 // w(B, s), F(1) in lookup/ghs_sigma_rel_schema.hpp.
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,6 +47,10 @@ Config narrowed(Config c);
 // The two forms one at a time (validation and benchmarks build variants with them).
 BuiltTable build_grid(const Config& c, const GenerateContext& ctx);
 BuiltTable build_material(const Material& m, const Config& c, const GenerateContext& ctx);
+
+// Scene hook (generators/ghs_sigma_rel_scene.cpp): materials of model "ghs" (B, c) get one
+// 1-D table each, or share the 3-D grid widened to cover them, whichever the cost model picks.
+std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);
 
 // The w range that covers s in [s_lo, s_hi] for every B in [B_lo, B_hi].
 std::pair<double, double> w_range(double B_lo, double B_hi, double s_lo, double s_hi, double w_scale);

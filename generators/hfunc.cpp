@@ -74,14 +74,16 @@ Config read_config(const nlohmann::json& entry) {
   if (const nlohmann::json* list = r.raw("functions")) c.kinds = read_kinds(*list, r.key_path("functions"), false);
   if (const nlohmann::json* list = r.raw("compact_linear"))
     c.compact_linear = read_kinds(*list, r.key_path("compact_linear"), true);
+  if (const nlohmann::json* list = r.raw("materials")) c.materials = read_ls_materials(*list, r.key_path("materials"));
+  c.material_mu_points = static_cast<int>(r.integer("material_mu_points", c.material_mu_points, 4, 100000));
   r.finish();
-  if (!c.do_precise && !c.do_compact)
-    throw ManifestError("tables.hfunc: precise and compact are both false: nothing to generate");
+  if (!c.do_precise && !c.do_compact && c.materials.empty())
+    throw ManifestError("tables.hfunc: precise and compact are both false and no materials: nothing to generate");
   return c;
 }
 
 nlohmann::json to_json(const Config& c) {
-  return {{"c_range", {c.c_lo, c.c_hi}},
+  nlohmann::json j = {{"c_range", {c.c_lo, c.c_hi}},
           {"mu_range", {c.mu_lo, c.mu_hi}},
           {"precise_c_step", c.precise.c_step},
           {"precise_mu_step", c.precise.mu_step},
@@ -91,6 +93,11 @@ nlohmann::json to_json(const Config& c) {
           {"compact", c.do_compact},
           {"functions", kind_names(c.kinds)},
           {"compact_linear", kind_names(c.compact_linear)}};
+  if (!c.materials.empty()) {
+    j["materials"] = ls_materials_json(c.materials);
+    j["material_mu_points"] = c.material_mu_points;
+  }
+  return j;
 }
 
 namespace {
@@ -118,10 +125,47 @@ TableSpec make_spec(HKind kind, bool compact, const Config& c) {
   return spec;
 }
 
+constexpr const char* kSource =
+    "d'Eon, An analytic BRDF for materials with spherical Lambertian scatterers, section 3.1, Eq. 20-26";
+// Generation cost on one core (cost model, docs/scenes.md): one FokHRow per c, then per mu.
+constexpr double kCostRowSeconds = 30e-6, kCostValueSeconds = 4e-6;
+
+// One material, one kind: H(mu) at the material's c (resolved from k_d if needed).
+BuiltTable build_material(HKind kind, const LsMaterial& m, const Config& c, const GenerateContext& ctx) {
+  const schema::DatasetSchema ds = sc::material_dataset(kind);
+  const double ls_c = ctx.dry_run ? 0.5 : ls_material_c(m);
+  TableSpec spec;
+  spec.dataset = std::string(ds.name) + m.name;
+  spec.quantity = std::string(ds.quantity) + "; material '" + m.name + "' at c = " + lookup::format_number(ls_c);
+  spec.axes = {axis_spec(sc::kMu, c.mu_lo, c.mu_hi, c.material_mu_points)};
+  spec.storage = lookup::Storage::float64;
+  spec.interpolation = lookup::Interpolation::cubic;
+  spec.domain = "c = " + lookup::format_number(ls_c) + ", mu in " + range_text(c.mu_lo, c.mu_hi);
+  spec.method = make_spec(kind, false, c).method;
+  spec.generator = "hfunc";
+  spec.error_rows = 4;
+  spec.error_per_row = 64;
+  spec.cost_class = "material_" + std::string(sc::kind_name(kind));
+  spec.cost_row_seconds = kCostRowSeconds;
+  spec.cost_value_seconds = kCostValueSeconds;
+  const RowFunction row = [kind, ls_c](std::span<const double>, std::span<const double> mus, std::span<double> out) {
+    const numerics::FokHRow h(kind, ls_c);
+    for (std::size_t j = 0; j < mus.size(); ++j) out[j] = h(mus[j]);
+  };
+  BuiltTable t = build_table(spec, row, ctx);
+  t.dataset.attributes["source"] = kSource;
+  t.dataset.attributes["material"] = m.name;
+  t.dataset.attributes["ls_c"] = ls_c;
+  return t;
+}
+
 }  // namespace
 
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
   std::vector<BuiltTable> tables;
+  for (const LsMaterial& m : c.materials)
+    for (HKind kind : c.kinds) tables.push_back(build_material(kind, m, c, ctx));
+  if (!c.do_precise && !c.do_compact) return tables;
   for (HKind kind : c.kinds)
     for (bool compact : {false, true}) {
       if (compact ? !c.do_compact : !c.do_precise) continue;
@@ -130,9 +174,11 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
         const numerics::FokHRow h(kind, outer[0]);
         for (std::size_t j = 0; j < mus.size(); ++j) out[j] = h(mus[j]);
       };
-      BuiltTable t = build_table(make_spec(kind, compact, c), row, ctx);
-      t.dataset.attributes["source"] =
-          "d'Eon, An analytic BRDF for materials with spherical Lambertian scatterers, section 3.1, Eq. 20-26";
+      TableSpec spec = make_spec(kind, compact, c);
+      spec.cost_row_seconds = kCostRowSeconds;
+      spec.cost_value_seconds = kCostValueSeconds;
+      BuiltTable t = build_table(spec, row, ctx);
+      t.dataset.attributes["source"] = kSource;
       tables.push_back(std::move(t));
     }
   return tables;

@@ -2,11 +2,13 @@
 // Table family hfunc: Chandrasekhar H-functions of the isotropic problem and of the three
 // pseudo-problems of the Lambertian-sphere phase function (d'Eon, section 3.1), see
 // hfunc.cpp; schema (datasets, axes, transforms) in lookup/hfunc_schema.hpp.
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "generators/family.hpp"
+#include "generators/ls_material.hpp"
 #include "numerics/hfunction_characteristic.hpp"
 
 namespace brdftab::gen::hfunc {
@@ -35,6 +37,10 @@ struct Config {
   // d'Eon's fit for H^(1) (~20 ns, Eq. 28-30) while staying ~180x more accurate.
   std::vector<numerics::HKind> compact_linear = {numerics::HKind::ls1, numerics::HKind::ls2};
   int error_rows = 512, error_per_row = 128;
+  // Non-empty: one 1-D table H(mu) per material and kind at the material's c, instead of the
+  // (c, mu) tables (scenes); material_mu_points on mu^(1/4), float64 cubic.
+  std::vector<LsMaterial> materials;
+  int material_mu_points = 192;
 };
 
 Config read_config(const nlohmann::json& entry);
@@ -42,5 +48,9 @@ nlohmann::json to_json(const Config& c);
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx);
 Config test_config();
 Config narrowed(Config c);
+
+// Scene hook (generators/hfunc_scene.cpp): LS materials need H^(0), H^(1), H^(2) at their c
+// (d'Eon's three-term BRDF): 1-D tables per material, or the shared precise (c, mu) tables.
+std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);
 
 }  // namespace brdftab::gen::hfunc

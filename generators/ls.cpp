@@ -13,6 +13,7 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <tuple>
 #include <vector>
@@ -36,15 +37,23 @@ Config read_config(const nlohmann::json& entry) {
   c.albedo_mu_step = r.number("albedo_mu_step", c.albedo_mu_step, 1e-3, 0.5);
   c.kd = r.boolean("kd", true);
   c.albedo = r.boolean("albedo", true);
+  if (const nlohmann::json* list = r.raw("materials")) c.materials = read_ls_materials(*list, r.key_path("materials"));
+  c.material_mu_points = static_cast<int>(r.integer("material_mu_points", c.material_mu_points, 4, 100000));
   r.finish();
-  if (!c.kd && !c.albedo) throw ManifestError("tables.ls: kd and albedo are both false: nothing to generate");
+  if (!c.kd && !c.albedo && c.materials.empty())
+    throw ManifestError("tables.ls: kd and albedo are both false and no materials: nothing to generate");
   return c;
 }
 
 nlohmann::json to_json(const Config& c) {
-  return {{"c_range", {c.c_lo, c.c_hi}},      {"mu_range", {c.mu_lo, c.mu_hi}}, {"kd_c_step", c.kd_c_step},
+  nlohmann::json j = {{"c_range", {c.c_lo, c.c_hi}},      {"mu_range", {c.mu_lo, c.mu_hi}}, {"kd_c_step", c.kd_c_step},
           {"albedo_c_step", c.albedo_c_step}, {"albedo_mu_step", c.albedo_mu_step}, {"kd", c.kd},
           {"albedo", c.albedo}};
+  if (!c.materials.empty()) {
+    j["materials"] = ls_materials_json(c.materials);
+    j["material_mu_points"] = c.material_mu_points;
+  }
+  return j;
 }
 
 namespace {
@@ -56,10 +65,46 @@ constexpr const char* kMethod =
 constexpr const char* kSource =
     "d'Eon, An analytic BRDF for materials with spherical Lambertian scatterers, Eq. 1-4 and Sec. 3.5";
 
+// Generation cost on one core (cost model, docs/scenes.md): one half-space solve
+// (numerics::LsAlbedo, Legendre order 64), then A(mu) per value.
+constexpr double kSolveSeconds = 0.5, kPlaneSeconds = 2e-6;
+
+// One material: A(mu) at its c, and its exact k_d, from one solve.
+BuiltTable build_material(const LsMaterial& m, const Config& c, const GenerateContext& ctx) {
+  const double ls_c = ctx.dry_run ? 0.5 : ls_material_c(m);
+  TableSpec spec;
+  spec.dataset = std::string(sc::kAlbedoMaterial.name) + m.name;
+  spec.quantity = std::string(sc::kAlbedoMaterial.quantity) + m.name + "' at c = " + lookup::format_number(ls_c);
+  spec.axes = {axis_spec(sc::kMu, c.mu_lo, c.mu_hi, c.material_mu_points)};
+  spec.interpolation = lookup::Interpolation::cubic;
+  spec.domain = "c = " + lookup::format_number(ls_c) + ", mu in " + range_text(c.mu_lo, c.mu_hi);
+  spec.method = kMethod;
+  spec.generator = "ls";
+  spec.error_rows = 1;
+  spec.error_per_row = 128;
+  spec.rel_floor = 1e-3;
+  spec.cost_class = "albedo_material";
+  spec.cost_row_seconds = kSolveSeconds;
+  spec.cost_value_seconds = kPlaneSeconds;
+  std::optional<numerics::LsAlbedo> solved;
+  if (!ctx.dry_run) solved.emplace(ls_c);  // one solve: the fill and the error rows reuse it
+  const numerics::LsAlbedo* a = solved ? &*solved : nullptr;
+  const RowFunction row = [a](std::span<const double>, std::span<const double> mus, std::span<double> out) {
+    for (std::size_t j = 0; j < mus.size(); ++j) out[j] = a ? (mus[j] == 0 ? a->plane(1e-300) : a->plane(mus[j])) : 0.0;
+  };
+  BuiltTable t = build_table(spec, row, ctx);
+  t.dataset.attributes["source"] = kSource;
+  t.dataset.attributes["material"] = m.name;
+  t.dataset.attributes["ls_c"] = ls_c;
+  t.dataset.attributes["ls_kd"] = a ? a->spherical() : 0.0;
+  return t;
+}
+
 }  // namespace
 
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
   std::vector<BuiltTable> tables;
+  for (const LsMaterial& m : c.materials) tables.push_back(build_material(m, c, ctx));
   const double c_span = transformed_span(sc::kC.transform, c.c_lo, c.c_hi);
   if (c.kd) {
     TableSpec spec;
@@ -73,6 +118,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
     spec.error_rows = 1;
     spec.error_per_row = c.kd_error_points;
     spec.rel_floor = 1e-3;
+    spec.cost_row_seconds = 0;
+    spec.cost_value_seconds = kSolveSeconds;
     // A 1-D table is a single row, so build_table cannot spread it over threads: the row
     // spreads its independent solves itself (one per c).
     const RowFunction row = pointwise_parallel_row([](double c) { return numerics::LsAlbedo(c).spherical(); });
@@ -94,6 +141,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
     spec.error_rows = c.albedo_error_rows;
     spec.error_per_row = c.albedo_error_per_row;
     spec.rel_floor = 1e-3;
+    spec.cost_row_seconds = kSolveSeconds;
+    spec.cost_value_seconds = kPlaneSeconds;
     // One solve per c row, then every mu.
     const RowFunction row = [](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
       const numerics::LsAlbedo a(outer[0]);

@@ -1,11 +1,13 @@
 #pragma once
 // Table family ls: albedo maps of the Lambertian-sphere medium (see ls.cpp; schema in
 // lookup/ls_schema.hpp).
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "generators/family.hpp"
+#include "generators/ls_material.hpp"
 
 namespace brdftab::gen::ls {
 
@@ -20,6 +22,10 @@ struct Config {
   bool kd = true, albedo = true;
   int kd_error_points = 32;  // each is one solve (~0.5 s)
   int albedo_error_rows = 16, albedo_error_per_row = 48;
+  // Non-empty: one 1-D table A(mu) per material at its c (attributes ls_c, ls_kd: exact),
+  // instead of the k_d and A tables (scenes); material_mu_points on mu^(1/4), float64 cubic.
+  std::vector<LsMaterial> materials;
+  int material_mu_points = 65;
 };
 
 Config read_config(const nlohmann::json& entry);
@@ -27,5 +33,9 @@ nlohmann::json to_json(const Config& c);
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx);
 Config test_config();
 Config narrowed(Config c);
+
+// Scene hook (generators/ls_scene.cpp): LS materials get their plane albedo A(mu) and exact
+// k_d, c from one solve each, or share the k_d(c) and A(c, mu) tables.
+std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);
 
 }  // namespace brdftab::gen::ls

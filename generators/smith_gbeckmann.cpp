@@ -13,6 +13,8 @@
 #include "generators/smith_gbeckmann.hpp"
 
 #include <cmath>
+#include <regex>
+#include <set>
 #include <tuple>
 
 #include "generators/manifest.hpp"
@@ -23,6 +25,36 @@
 namespace brdftab::gen::smith_gbeckmann {
 
 namespace sc = schema::smith_gbeckmann;
+
+namespace {
+
+// "materials": [{"name": ..., "p": ...}, ...]
+std::vector<Material> read_materials(const nlohmann::json& list, const std::string& where) {
+  if (!list.is_array() || list.empty())
+    throw ManifestError(where + ": expected a non-empty list of {\"name\", \"p\"}");
+  static const std::regex name_re("[A-Za-z0-9_.-]{1,64}");
+  std::vector<Material> out;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string ipath = where + "[" + std::to_string(i) + "]";
+    EntryReader m(list[i], ipath);
+    Material mat;
+    const nlohmann::json* name = m.raw("name");
+    if (!name || !name->is_string() || !std::regex_match(name->get<std::string>(), name_re))
+      throw ManifestError(ipath + ".name: expected a string of 1-64 characters [A-Za-z0-9_.-]");
+    mat.name = name->get<std::string>();
+    if (!names.insert(mat.name).second) throw ManifestError(ipath + ".name: duplicate material '" + mat.name + "'");
+    mat.p = m.number("p", NAN, numerics::kSmithGBeckmannPMin, numerics::kSmithGBeckmannPMax);
+    if (!(mat.p >= numerics::kSmithGBeckmannPMin))
+      throw ManifestError(ipath + ".p: required, in [" + lookup::format_number(numerics::kSmithGBeckmannPMin) + ", " +
+                          lookup::format_number(numerics::kSmithGBeckmannPMax) + "]");
+    m.finish();
+    out.push_back(mat);
+  }
+  return out;
+}
+
+}  // namespace
 
 Config read_config(const nlohmann::json& entry) {
   EntryReader r(entry, "tables.smith_gbeckmann");
@@ -38,14 +70,16 @@ Config read_config(const nlohmann::json& entry) {
   c.precise = r.boolean("precise", true);
   c.compact_interpolation =
       lookup::interpolation_from_name(r.choice("compact_interpolation", "cubic", {"linear", "cubic"}));
+  if (const nlohmann::json* list = r.raw("materials")) c.materials = read_materials(*list, r.key_path("materials"));
+  c.material_b_points = static_cast<int>(r.integer("material_b_points", c.material_b_points, 4, 100000));
   r.finish();
-  if (!c.compact && !c.precise)
-    throw ManifestError("tables.smith_gbeckmann: compact and precise are both false: nothing to generate");
+  if (!c.compact && !c.precise && c.materials.empty())
+    throw ManifestError("tables.smith_gbeckmann: compact and precise are both false and no materials: nothing to generate");
   return c;
 }
 
 nlohmann::json to_json(const Config& c) {
-  return {{"p_range", {c.p_lo, c.p_hi}},
+  nlohmann::json j = {{"p_range", {c.p_lo, c.p_hi}},
           {"b_scale", c.b_scale},
           {"compact_log_p_step", c.compact_log_p_step},
           {"compact_b_points", c.compact_b_points},
@@ -54,9 +88,30 @@ nlohmann::json to_json(const Config& c) {
           {"compact", c.compact},
           {"precise", c.precise},
           {"compact_interpolation", std::string(lookup::interpolation_name(c.compact_interpolation))}};
+  if (!c.materials.empty()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const Material& m : c.materials) list.push_back({{"name", m.name}, {"p", m.p}});
+    j["materials"] = list;
+    j["material_b_points"] = c.material_b_points;
+  }
+  return j;
 }
 
 namespace {
+
+constexpr const char* kMethod =
+    "Lambda = 2p nu^2/(pi Gamma(1/p)) Integral_0^inf s (s - atan s) exp(-(nu^2 (1+s^2))^p) ds, nu = 1/a "
+    "(Eq. 41 reduced to one integral), Boost exp_sinh, tolerance 1e-13; a > 1e5: M1 a - 1/2 + P2(0)/(2a)";
+// Generation cost on one core (cost model, docs/scenes.md), measured: see kCost* comment
+// in smith_gbeckmann_scene.cpp.
+constexpr double kCostRowSeconds = 0, kCostValueSeconds = 20e-6;
+
+void add_attributes(BuiltTable& t) {
+  t.dataset.attributes["b_definition"] = "b = a * M1(p), M1(p) = Gamma(3/(2p)) / (pi Gamma(1/p))";
+  t.dataset.attributes["source"] =
+      "Holzschuch & Pacanowski, A Physically-Based Reflectance Model Combining Reflection and Diffraction, "
+      "Sec. 4.2 Eq. 38-42 (Eq. 40 corrected, validate/ERRATA.md)";
+}
 
 // One row: fixed p, all b. M1(p) once per row.
 void fill_row(std::span<const double> outer, std::span<const double> bs, std::span<double> out) {
@@ -77,15 +132,15 @@ BuiltTable build_one(const schema::DatasetSchema& ds, const Config& c, double lo
   spec.interpolation = interpolation;
   spec.domain = "p in [" + lookup::format_number(c.p_lo) + ", " + lookup::format_number(c.p_hi) +
                 "], b = a * M1(p) in [0, inf], a = beta tan(theta)";
-  spec.method =
-      "Lambda = 2p nu^2/(pi Gamma(1/p)) Integral_0^inf s (s - atan s) exp(-(nu^2 (1+s^2))^p) ds, nu = 1/a "
-      "(Eq. 41 reduced to one integral), Boost exp_sinh, tolerance 1e-13; a > 1e5: M1 a - 1/2 + P2(0)/(2a)";
+  spec.method = kMethod;
   spec.generator = "smith_gbeckmann";
   spec.error_rows = c.error_rows;
   spec.error_per_row = c.error_per_row;
   spec.rel_floor = 1e-3;
+  spec.cost_row_seconds = kCostRowSeconds;
+  spec.cost_value_seconds = kCostValueSeconds;
   BuiltTable t = build_table(spec, fill_row, ctx);
-  t.dataset.attributes["b_definition"] = "b = a * M1(p), M1(p) = Gamma(3/(2p)) / (pi Gamma(1/p))";
+  add_attributes(t);
   t.dataset.attributes["lookup"] = "G1 = table(p, a * M1(p)); see src/lookup/smith_gbeckmann.hpp";
   t.dataset.attributes["inputs"] = std::string(sc::kInputs);
   t.dataset.attributes["derived_axes"] = std::string(sc::kDerivedAxes);
@@ -95,10 +150,43 @@ BuiltTable build_one(const schema::DatasetSchema& ds, const Config& c, double lo
   return t;
 }
 
+// One material: G1(b) at its p on the b axis (the same b = a M1(p) as the grids, so the
+// masking transition sits at the same place for every p).
+BuiltTable build_material(const Material& m, const Config& c, const GenerateContext& ctx) {
+  TableSpec spec;
+  spec.dataset = std::string(sc::kG1Material.name) + m.name;
+  spec.quantity = std::string(sc::kG1Material.quantity) + m.name + "' (p = " + lookup::format_number(m.p) +
+                  "): G1 = 1 / (1 + Lambda(a = b / M1(p), p))";
+  spec.axes = {axis_spec(sc::kB, 0.0, INFINITY, c.material_b_points, c.b_scale)};
+  spec.storage = lookup::Storage::float64;
+  spec.interpolation = lookup::Interpolation::cubic;
+  spec.domain = "p = " + lookup::format_number(m.p) + ", b = a * M1(p) in [0, inf], a = beta tan(theta)";
+  spec.method = kMethod;
+  spec.generator = "smith_gbeckmann";
+  spec.error_rows = 4;
+  spec.error_per_row = 64;
+  spec.rel_floor = 1e-3;
+  spec.cost_class = "g1_material";
+  spec.cost_row_seconds = kCostRowSeconds;
+  spec.cost_value_seconds = kCostValueSeconds;
+  const double p = m.p;
+  const RowFunction row = [p](std::span<const double>, std::span<const double> bs, std::span<double> out) {
+    const double outer[1] = {p};
+    fill_row(outer, bs, out);
+  };
+  BuiltTable t = build_table(spec, row, ctx);
+  add_attributes(t);
+  t.dataset.attributes["material"] = m.name;
+  t.dataset.attributes["p"] = m.p;
+  t.dataset.attributes["lookup"] = "G1 = table(a * M1(p)), p from the attribute; see lookup::SmithGBeckmannMaterial";
+  return t;
+}
+
 }  // namespace
 
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
   std::vector<BuiltTable> tables;
+  for (const Material& m : c.materials) tables.push_back(build_material(m, c, ctx));
   if (c.compact)
     tables.push_back(build_one(sc::kG1Compact, c, c.compact_log_p_step, c.compact_b_points, lookup::Storage::float32,
                                 c.compact_interpolation, ctx));

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <map>
 #include <mutex>
 #include <random>
 #include <sstream>
@@ -53,11 +54,76 @@ void parallel_rows(std::size_t n, const GenerateContext& ctx, const std::string&
   ctx.report(stage, 1.0);
 }
 
+// Seconds of one row of the spec's kind: setup (per row) and per value, from timing the row
+// function on the middle outer point with 1 and with up to 5 last-axis values. Cached per
+// cost class for the process.
+std::pair<double, double> row_cost(const TableSpec& spec, const std::vector<std::vector<double>>& grid,
+                                   const RowFunction& row) {
+  static std::mutex mutex;
+  static std::map<std::string, std::pair<double, double>> cache;
+  const std::string key = spec.generator + "|" + (spec.cost_class.empty() ? spec.dataset : spec.cost_class);
+  {
+    std::lock_guard lock(mutex);
+    if (auto it = cache.find(key); it != cache.end()) return it->second;
+  }
+  const std::size_t rank = grid.size();
+  std::vector<double> outer(rank - 1);
+  for (std::size_t d = 0; d + 1 < rank; ++d) outer[d] = grid[d][grid[d].size() / 2];
+  const auto& last = grid.back();
+  const std::size_t k = std::min<std::size_t>(5, last.size());
+  std::vector<double> xs1{last[last.size() / 2]}, xsk(k), out(k);
+  for (std::size_t j = 0; j < k; ++j) xsk[j] = last[(j * (last.size() - 1)) / std::max<std::size_t>(1, k - 1)];
+  auto time = [&](const std::vector<double>& xs) {
+    const auto t = std::chrono::steady_clock::now();
+    row(outer, xs, std::span<double>(out.data(), xs.size()));
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  const double t1 = time(xs1), tk = time(xsk);
+  const double per = k > 1 ? std::max(0.0, (tk - t1) / static_cast<double>(k - 1)) : t1;
+  const std::pair<double, double> cost{std::max(0.0, t1 - per), per};
+  std::lock_guard lock(mutex);
+  cache.emplace(key, cost);
+  return cost;
+}
+
+BuiltTable dry_run_table(const TableSpec& spec, const RowFunction& row) {
+  std::vector<lookup::Axis> axes;
+  std::vector<std::vector<double>> grid;
+  std::size_t values = 1;
+  for (const auto& s : spec.axes) {
+    axes.push_back(lookup::make_axis(s.name, s.transform, s.lo, s.hi, s.n, s.scale, s.units));
+    grid.push_back(axis_values(s));
+    values *= static_cast<std::size_t>(s.n);
+  }
+  const std::size_t n_last = static_cast<std::size_t>(axes.back().n), rows = values / n_last;
+  const auto [setup, per] = spec.cost_row_seconds >= 0 && spec.cost_value_seconds >= 0
+                                ? std::pair<double, double>{spec.cost_row_seconds, spec.cost_value_seconds}
+                                : row_cost(spec, grid, row);
+  const double err_rows = std::max(1, spec.error_rows), err_values = err_rows * std::max(1, spec.error_per_row);
+  double seconds = (static_cast<double>(rows) + err_rows) * setup + (static_cast<double>(values) + err_values) * per;
+  // Declared costs are single-core: the estimate is CPU seconds, not depending on the
+  // machine's thread count (reproducible decisions); timed samples are wall time of a row.
+  if (axes.size() >= 2 && !(spec.cost_row_seconds >= 0)) seconds /= std::max(1, omp_get_max_threads());
+  const std::vector<double> zeros(values, 0.0);
+  BuiltTable out;
+  out.dataset.table = lookup::Table(spec.dataset, axes, zeros, spec.storage, spec.interpolation);
+  out.dataset.quantity = spec.quantity;
+  TableSummary& s = out.summary;
+  s.dataset = spec.dataset;
+  for (const auto& ax : axes) s.shape.push_back(static_cast<std::size_t>(ax.n));
+  s.storage = std::string(lookup::storage_name(spec.storage));
+  s.interpolation = std::string(lookup::interpolation_name(spec.interpolation));
+  s.bytes = out.dataset.table.bytes();
+  s.seconds = seconds;
+  return out;
+}
+
 }  // namespace
 
 BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const GenerateContext& ctx) {
   const auto t0 = std::chrono::steady_clock::now();
   check_table_spec(spec);  // before any work: a grid the reader accepts, a bounded size
+  if (ctx.dry_run) return dry_run_table(spec, row);
   const int rank = static_cast<int>(spec.axes.size());
   if (rank < 1 || rank > lookup::kMaxRank)
     throw std::invalid_argument("table '" + spec.dataset + "': rank " + std::to_string(rank) + " is outside 1..4");
@@ -94,11 +160,14 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
   };
   std::vector<Worst> worst(rows);
   parallel_rows(rows, ctx, spec.dataset + ": measure", [&](std::size_t r) {
+    // mt19937_64's output is fixed by the standard; std::uniform_real_distribution's is not
+    // (it differs between standard libraries), so the uniform numbers are made here from the
+    // raw 64-bit output: the top 53 bits times 2^-53, in [0, 1). Same points everywhere.
     std::mt19937_64 rng(spec.seed + 7919 * r + 1000003ull * ctx.error_seed);
-    std::uniform_real_distribution<double> uni(0.0, 1.0);
+    auto uniform01 = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
     auto sample = [&](const lookup::Axis& a) {
-      // Strictly inside the range: u0 + f*(n-1)*du with f in (0, 1).
-      const double f = uni(rng);
+      // Inside the range: u0 + f*(n-1)*du with f in [0, 1).
+      const double f = uniform01();
       return lookup::invert_transform(a.transform, a.u0 + f * (a.n - 1) * a.du, a.scale);
     };
     std::vector<double> outer(rank - 1), last(per_row), exact(per_row), point(rank);
@@ -158,7 +227,8 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
       << "), exact values from the generator's numerics";
   if (spec.rel_floor > 0) how << "; relative error only where |exact| > " << format_number(spec.rel_floor);
   a["error_sampling"] = how.str();
-  a["generation_seconds"] = seconds;
+  // No generation_seconds attribute: a wall-clock measurement would make every run's file
+  // differ (reproducible output); the time is in the summary that generate prints.
 
   TableSummary& s = out.summary;
   s.dataset = spec.dataset;
@@ -184,7 +254,9 @@ std::vector<TableSummary> write_built_tables(const std::string& file, std::vecto
     if (auto g = std::get_if<std::string>(&t.dataset.attributes["generator"])) generator = *g;
     datasets.push_back(std::move(t.dataset));
   }
-  tablewrite::write_table_file(ctx.out_dir / file, datasets, {{"generator", generator}});
+  std::map<std::string, tablewrite::AttributeValue> file_attributes{{"generator", generator}};
+  if (!ctx.content_key.empty()) file_attributes["content_key"] = ctx.content_key;
+  tablewrite::write_table_file(ctx.out_dir / file, datasets, file_attributes);
   return summaries;
 }
 

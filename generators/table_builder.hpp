@@ -75,6 +75,14 @@ struct TableSpec {
   // Relative error uses |exact| in the denominator; points with |exact| <= rel_floor
   // count only for the absolute error.
   double rel_floor = 0.0;
+  // Dry runs time one sample row per cost class (generator + cost_class, else the dataset
+  // name) and reuse it: per-material tables of one kind share a class.
+  std::string cost_class;
+  // Declared generation cost (seconds per row setup and per value on one core, measured
+  // and written down by the family): dry runs then estimate without timing anything, so a
+  // cost-model decision is the same on every run and machine (reproducible scenes).
+  // Negative: time a sample row instead (plan only).
+  double cost_row_seconds = -1, cost_value_seconds = -1;
 };
 
 struct BuiltTable {

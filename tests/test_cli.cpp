@@ -28,7 +28,10 @@ fs::path demo_tables() {
     fs::remove_all(d);
     fs::create_directories(d);
     std::ofstream(d / "manifest.json") << R"({"schema_version": 1, "tables": {"demo": {"x_points": 129, "y_step": 0.05}}})";
+    // A timestamp only when asked (reproducible output): info shows it then.
+    ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
     const auto r = run_cli("generate --quiet --manifest '" + (d / "manifest.json").string() + "' --out '" + d.string() + "'");
+    ::unsetenv("SOURCE_DATE_EPOCH");
     REQUIRE(r.status == 0);
     return d;
   }();
@@ -143,7 +146,7 @@ TEST_CASE("info describes shape, axes, storage, errors and provenance, a corrupt
   const auto r = run_cli("info '" + (demo_tables() / "demo.h5").string() + "'");
   REQUIRE(r.status == 0);
   for (const char* s : {"dataset: demo_exp_cos", "shape: 129 x 33", "storage: float64", "transform x/(k+x)",
-                        "range [0, inf]", "source_commit", "created_utc", "max rel", "method:"})
+                        "range [0, inf]", "source_commit", "created_utc", "2023-11-14T22:13:20Z", "max rel", "method:"})
     CHECK_MESSAGE(r.out.find(s) != std::string::npos, s);
   const fs::path bad = fs::path(BRDFTAB_TEST_TMP) / ("cli_" + std::to_string(::getpid())) / "bad.h5";
   std::ofstream(bad) << "garbage";

@@ -36,8 +36,11 @@ int run_main(int argc, char** argv) {
 
   GenerateOptions gen;
   auto* g = app.add_subcommand("generate", "generate the tables a manifest lists (default: tables/default.json)");
-  g->add_option("--manifest", gen.manifest, "manifest JSON file")->check(CLI::ExistingFile);
-  g->add_option("--out", gen.out_dir, "output folder (default: the table folder)");
+  auto* g_manifest = g->add_option("--manifest", gen.manifest, "manifest JSON file")->check(CLI::ExistingFile);
+  g->add_option("--scene", gen.scene, "scene JSON file: generate only what its materials need (docs/scenes.md)")
+      ->excludes(g_manifest);
+  auto* g_out = g->add_option("--out", gen.out_dir, "output folder (default: the table folder; required with --scene)");
+  g->add_flag("--rebuild", gen.rebuild, "rebuild every file, also those whose content key is up to date");
   g->add_option("--only", gen.only, "generate only these families")->expected(1, -1);
   g->add_option("--threads", gen.threads, "OpenMP threads, 1-1024 (default: all cores)")->check(CLI::Range(1, 1024));
   g->add_flag("--quiet,-q", gen.quiet, "no progress output");
@@ -90,8 +93,26 @@ int run_main(int argc, char** argv) {
       ->delimiter(',');
   a->add_flag("--list", au.list, "list the models and their parameters");
 
+  PlanOptions pl;
+  auto* p = app.add_subcommand("plan", "what generate would build (tables, shapes, bytes, seconds, error) and what is up to date");
+  auto* p_manifest = p->add_option("--manifest", pl.manifest, "manifest JSON file")->check(CLI::ExistingFile);
+  p->add_option("--scene", pl.scene, "scene JSON file")->excludes(p_manifest);
+  p->add_option("--out", pl.out_dir, "also report which files in this folder are up to date");
+
+  CheckOptions ck;
+  auto* c = app.add_subcommand("check", "exit 1 if a file the scene or manifest needs is missing or stale in DIR");
+  c->add_option("dir", ck.dir, "table folder")->required();
+  auto* c_manifest = c->add_option("--manifest", ck.manifest, "manifest JSON file")->check(CLI::ExistingFile);
+  c->add_option("--scene", ck.scene, "scene JSON file")->excludes(c_manifest);
+
+  SynthOptions sy;
+  auto* s = app.add_subcommand("scene-synth", "print a synthetic scene of N materials (JSON) for measurements");
+  s->add_option("materials", sy.materials, "number of materials, 1-100000")->required()->check(CLI::Range(1, 100000));
+  s->add_option("--seed", sy.seed, "random seed (same scene on every platform)");
+  s->add_option("--models", sy.models, "comma-separated models to cycle through (default ghs,ls)");
+
   bool allow_foreign = false, force = false;
-  for (CLI::App* sub : {static_cast<CLI::App*>(&app), e, v, b, i, x})
+  for (CLI::App* sub : {static_cast<CLI::App*>(&app), e, v, b, i, x, p, c})
     sub->add_flag("--allow-foreign", allow_foreign,
                   "read table files without a brdftab digest (each is validated in a child process first)");
   g->add_flag("--force", force, "generate tables above the pre-flight size limit (4M values)");
@@ -114,7 +135,13 @@ int run_main(int argc, char** argv) {
   if (va.report_dir.empty()) va.report_dir = "report";
   if (gen.out_dir.empty()) gen.out_dir = "tables";
 
-  if (g->parsed()) return run_generate(gen, std::cout, std::cerr);
+  if (g->parsed()) {
+    gen.out_given = g_out->count() > 0;
+    return run_generate(gen, std::cout, std::cerr);
+  }
+  if (p->parsed()) return run_plan(pl, std::cout, std::cerr);
+  if (c->parsed()) return run_check(ck, std::cout, std::cerr);
+  if (s->parsed()) return run_scene_synth(sy, std::cout, std::cerr);
   if (e->parsed()) return run_eval(ev, std::cin, std::cout, std::cerr);
   if (v->parsed()) return run_validate(va, std::cout, std::cerr);
   if (b->parsed()) {

@@ -1,4 +1,6 @@
-// `brdftab generate [--manifest FILE] [--out DIR] [--only NAME...] [--threads N] [--quiet]`
+// `brdftab generate [--manifest FILE | --scene FILE] [--out DIR] [--only NAME...] [--threads N]
+//                   [--quiet] [--rebuild] [--force]`
+// Incremental: a file whose stored content key matches its entry is skipped (docs/scenes.md).
 #include <omp.h>
 #include <unistd.h>
 
@@ -8,26 +10,16 @@
 #include <ostream>
 
 #include "cli/commands.hpp"
+#include "cli/job_source.hpp"
 #include "cli/progress.hpp"
+#include "generators/content_key.hpp"
 #include "generators/family.hpp"
-#include "generators/manifest.hpp"
 
 namespace brdftab::cli {
 
 namespace {
 
-std::string human_bytes(std::size_t b) {
-  char buf[32];
-  if (b < 10 * 1024)
-    std::snprintf(buf, sizeof buf, "%zu B", b);
-  else if (b < 10 * 1024 * 1024)
-    std::snprintf(buf, sizeof buf, "%.1f KB", b / 1024.0);
-  else
-    std::snprintf(buf, sizeof buf, "%.1f MB", b / (1024.0 * 1024.0));
-  return buf;
-}
-
-void print_summary(const std::vector<gen::TableSummary>& rows, double seconds, std::ostream& out) {
+void print_summary(const std::vector<gen::TableSummary>& rows, std::ostream& out) {
   char line[512];
   std::snprintf(line, sizeof line, "%-22s %-22s %-14s %-8s %-7s %10s %11s %11s %8s\n", "file", "dataset", "shape",
                 "storage", "interp", "size", "max_abs_err", "max_rel_err", "seconds");
@@ -40,74 +32,82 @@ void print_summary(const std::vector<gen::TableSummary>& rows, double seconds, s
                   human_bytes(r.bytes).c_str(), r.max_abs_error, r.max_rel_error, r.seconds);
     out << line;
   }
-  std::snprintf(line, sizeof line, "%zu tables in %.2f s (errors measured off-grid against exact numerics)\n",
-                rows.size(), seconds);
-  out << line;
 }
 
 }  // namespace
 
 int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err) {
-  std::vector<gen::ManifestEntry> entries;
-  try {
-    std::filesystem::path manifest = o.manifest;
-    if (manifest.empty()) manifest = default_tables_dir() / "default.json";
-    std::error_code ec;
-    if (std::filesystem::exists(manifest, ec))
-      entries = gen::load_manifest(manifest);
-    else
-      entries = gen::parse_manifest(gen::default_manifest());
-    for (const auto& name : o.only) {
-      if (!gen::find_family(name)) {
-        err << "brdftab generate: --only " << name << ": unknown table family\n";
-        return 2;
-      }
-      if (std::none_of(entries.begin(), entries.end(), [&](const auto& e) { return e.family == name; })) {
-        err << "brdftab generate: --only " << name << ": the manifest has no entry for it\n";
-        return 2;
-      }
-    }
-  } catch (const gen::ManifestError& e) {
-    err << "brdftab generate: " << e.what() << "\n";
+  if (!o.scene.empty() && !o.manifest.empty()) {
+    err << "brdftab generate: --scene and --manifest exclude each other\n";
     return 2;
-  } catch (const std::exception& e) {
-    err << "brdftab generate: " << e.what() << "\n";
-    return 1;
   }
+  if (!o.scene.empty() && !o.out_given) {
+    err << "brdftab generate: --scene needs --out DIR (a scene's tables never go to the default table folder)\n";
+    return 2;
+  }
+  const auto src = load_jobs("generate", o.manifest, o.scene, o.only, err);
+  if (!src) return 2;
   if (o.threads > 0) omp_set_num_threads(o.threads);
   StderrProgress progress(err, isatty(STDERR_FILENO) != 0, o.quiet);
   gen::GenerateContext ctx;
   ctx.out_dir = o.out_dir;
   ctx.progress = &progress;
   std::vector<gen::TableSummary> summaries;
+  std::vector<std::string> skipped;
   const auto t0 = std::chrono::steady_clock::now();
-  auto selected = [&](const auto& e) {
-    return o.only.empty() || std::find(o.only.begin(), o.only.end(), e.family) != o.only.end();
-  };
-  const auto file_count = static_cast<std::size_t>(std::count_if(entries.begin(), entries.end(), selected));
+  // The files to build (up-to-date ones are skipped), then each with progress n/N.
+  std::vector<const decltype(src->jobs)::value_type*> todo;
+  for (const auto& job : src->jobs) {
+    if (!o.rebuild && gen::table_file_status(o.out_dir / job.file, job.key).state == gen::FileState::up_to_date)
+      skipped.push_back(job.file);
+    else
+      todo.push_back(&job);
+  }
   std::size_t file_index = 0;
-  for (const auto& e : entries) {
-    if (!selected(e)) continue;
-    progress.start_file(++file_index, file_count, e.family);
+  for (const auto* jp : todo) {
+    const auto& job = *jp;
+    progress.start_file(++file_index, todo.size(), job.family);
     try {
-      auto s = gen::find_family(e.family)->generate(e.entry, ctx);
+      ctx.content_key = job.key;
+      auto s = gen::find_family(job.family)->generate(job.entry, ctx);
       summaries.insert(summaries.end(), s.begin(), s.end());
     } catch (const gen::ManifestError& ex) {
       progress.finish_line();
-      err << "brdftab generate: family '" << e.family << "': " << ex.what() << "\n";
+      err << "brdftab generate: family '" << job.family << "': " << ex.what() << "\n";
       return 2;
     } catch (const std::bad_alloc&) {
       progress.finish_line();
-      err << "brdftab generate: family '" << e.family << "' failed: out of memory\n";
+      err << "brdftab generate: family '" << job.family << "' failed: out of memory\n";
       return 1;
     } catch (const std::exception& ex) {
       progress.finish_line();
-      err << "brdftab generate: family '" << e.family << "' failed: " << ex.what() << "\n";
+      err << "brdftab generate: family '" << job.family << "' failed: " << ex.what() << "\n";
+      return 1;
+    }
+  }
+  bool index_written = false;
+  if (src->scene && (o.rebuild || gen::scene_index_key(o.out_dir / gen::kSceneIndexFile) != src->scene->index_key)) {
+    try {
+      gen::write_scene_index(o.out_dir, *src->scene);
+      index_written = true;
+    } catch (const std::exception& ex) {
+      err << "brdftab generate: scene index: " << ex.what() << "\n";
       return 1;
     }
   }
   progress.finish_line();
-  print_summary(summaries, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), out);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!summaries.empty()) print_summary(summaries, out);
+  char line[256];
+  std::snprintf(line, sizeof line, "%zu tables in %.2f s (errors measured off-grid against exact numerics)", summaries.size(),
+                seconds);
+  out << line;
+  if (!skipped.empty()) {
+    out << "; up to date, skipped:";
+    for (const auto& f : skipped) out << " " << f;
+  }
+  if (src->scene) out << (index_written ? "; scene index written" : "; scene index up to date");
+  out << "\n";
   return 0;
 }
 

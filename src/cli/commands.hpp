@@ -14,12 +14,37 @@ std::filesystem::path default_tables_dir();
 
 struct GenerateOptions {
   std::filesystem::path manifest;  // empty: tables/default.json of the source tree, else built-in defaults
+  std::filesystem::path scene;     // a scene file instead of a manifest (docs/scenes.md)
   std::filesystem::path out_dir;
+  bool out_given = false;          // --scene requires an explicit --out
   std::vector<std::string> only;
   int threads = 0;
   bool quiet = false;
+  bool rebuild = false;            // rebuild files whose content key matches too
 };
 int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err);
+
+// `brdftab plan`: what generate would build (tables, shapes, bytes, estimated seconds,
+// expected error) and, with --out, what in that folder is already up to date.
+struct PlanOptions {
+  std::filesystem::path manifest, scene, out_dir;
+};
+int run_plan(const PlanOptions& o, std::ostream& out, std::ostream& err);
+
+// `brdftab check DIR`: exit 0 if every file the manifest/scene needs is in DIR and up to
+// date, 1 if one is missing, stale or unreadable, 2 on bad input.
+struct CheckOptions {
+  std::filesystem::path dir, manifest, scene;
+};
+int run_check(const CheckOptions& o, std::ostream& out, std::ostream& err);
+
+// `brdftab scene-synth N`: a synthetic scene of N materials (JSON on stdout).
+struct SynthOptions {
+  int materials = 10;
+  unsigned seed = 1;
+  std::string models = "ghs,ls";
+};
+int run_scene_synth(const SynthOptions& o, std::ostream& out, std::ostream& err);
 
 struct EvalOptions {
   std::string quantity;

@@ -37,8 +37,18 @@ inline constexpr DatasetSchema dataset(Kind k, bool compact) {
   const int i = static_cast<int>(k);
   return {kNames[i + (compact ? 4 : 0)], false, kQuantities[i], 2, {kC, kMu}};
 }
+// One material's H(mu) at its fixed c (scenes, docs/scenes.md): hfunc_<kind>_material_<name>,
+// 1-D on mu^(1/4), attribute `ls_c`.
+inline constexpr std::array<std::string_view, 4> kMaterialPrefixes{"hfunc_iso_material_", "hfunc_ls0_material_",
+                                                                   "hfunc_ls1_material_", "hfunc_ls2_material_"};
+inline constexpr DatasetSchema material_dataset(Kind k) {
+  const int i = static_cast<int>(k);
+  return {kMaterialPrefixes[i], true, kQuantities[i], 1, {kMu}};
+}
 inline constexpr std::array kDatasets{dataset(Kind::isotropic, false), dataset(Kind::ls0, false), dataset(Kind::ls1, false),
                                       dataset(Kind::ls2, false), dataset(Kind::isotropic, true),  dataset(Kind::ls0, true),
-                                      dataset(Kind::ls1, true),  dataset(Kind::ls2, true)};
+                                      dataset(Kind::ls1, true),  dataset(Kind::ls2, true),
+                                      material_dataset(Kind::isotropic), material_dataset(Kind::ls0),
+                                      material_dataset(Kind::ls1), material_dataset(Kind::ls2)};
 
 }  // namespace brdftab::schema::hfunc

@@ -18,6 +18,9 @@ inline constexpr DatasetSchema kKd{
 inline constexpr DatasetSchema kAlbedo{
     "ls_albedo", false, "A(c, mu): plane albedo of the Lambertian-sphere half space (true phase function)", 2,
     {kC, kMu}};
-inline constexpr std::array kDatasets{kKd, kAlbedo};
+// One material's A(mu) at its fixed c (scenes, docs/scenes.md): ls_albedo_material_<name>,
+// attributes ls_c and ls_kd (its exact spherical albedo from the same solve).
+inline constexpr DatasetSchema kAlbedoMaterial{"ls_albedo_material_", true, "A(mu) of material '", 1, {kMu}};
+inline constexpr std::array kDatasets{kKd, kAlbedo, kAlbedoMaterial};
 
 }  // namespace brdftab::schema::ls

@@ -33,6 +33,8 @@ inline constexpr AxisSchema kP{"p", lookup::Transform::log, "1"};
 inline constexpr AxisSchema kB{"b", lookup::Transform::x_over_k_plus_x, "1"};
 inline constexpr DatasetSchema kG1Compact{"smith_gbeckmann_g1_compact", false, kQuantity, 2, {kP, kB}};
 inline constexpr DatasetSchema kG1Precise{"smith_gbeckmann_g1_precise", false, kQuantity, 2, {kP, kB}};
-inline constexpr std::array kDatasets{kG1Compact, kG1Precise};
+// One material's G1 at its fixed p (scenes, docs/scenes.md): 1-D on b, attribute `p`.
+inline constexpr DatasetSchema kG1Material{"smith_gbeckmann_g1_material_", true, "G1(b) of material '", 1, {kB}};
+inline constexpr std::array kDatasets{kG1Compact, kG1Precise, kG1Material};
 
 }  // namespace brdftab::schema::smith_gbeckmann

@@ -209,11 +209,18 @@ constexpr AttributeRule kDatasetRules[] = {
     {"hp_material", Kind::text, 0, 0, false},
     // filip: the material's parameter set, "phi_a1=...,w1=...,..." (generators/filip.hpp)
     {"filip_parameters", Kind::text, 0, 0, false},
+    // per-material tables of scenes (docs/scenes.md): smith_gbeckmann p; ls/hfunc particle
+    // albedo c and spherical albedo k_d (named ls_* apart from ghs's c >= 1)
+    {"p", Kind::number, 0, 1e3, true},
+    {"ls_c", Kind::number, 0, 1, false},
+    {"ls_kd", Kind::number, 0, 1, false},
 };
 constexpr AttributeRule kFileRules[] = {
     {"schema_version", Kind::integer, 0, 0, false},
     {"generator", Kind::text, 0, 0, false},
     {"created_utc", Kind::text, 0, 0, false},
+    // what produced the file (generators/content_key.hpp): incremental generate, check
+    {"content_key", Kind::text, 0, 0, false},
 };
 constexpr AttributeRule kAxisRules[] = {
     {"name", Kind::text, 0, 0, false},

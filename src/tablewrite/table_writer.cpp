@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <limits>
@@ -34,13 +35,36 @@ namespace {
 
 std::atomic<std::size_t> g_fail_after{std::numeric_limits<std::size_t>::max()};
 
-std::string utc_now() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+// The created_utc timestamp (and with it source_commit): only when asked (reproducible
+// output, docs/scenes.md):
+// SOURCE_DATE_EPOCH (seconds since 1970, the reproducible-builds convention) or
+// BRDFTAB_TIMESTAMP=now (the wall clock). Otherwise "" and no attribute is written.
+std::string creation_timestamp() {
+  std::time_t t = 0;
+  if (const char* e = std::getenv("SOURCE_DATE_EPOCH"); e && *e) {
+    char* end = nullptr;
+    const long long v = std::strtoll(e, &end, 10);
+    if (*end != '\0' || v < 0) throw WriteError("SOURCE_DATE_EPOCH = '" + std::string(e).substr(0, 40) +
+                                                "' is not a non-negative integer (seconds since 1970)");
+    t = static_cast<std::time_t>(v);
+  } else if (const char* n = std::getenv("BRDFTAB_TIMESTAMP"); n && std::strcmp(n, "now") == 0) {
+    t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  } else {
+    return "";
+  }
   std::tm tm{};
   gmtime_r(&t, &tm);
   char buf[32];
   std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
   return buf;
+}
+
+// An object-creation property list with HDF5's object timestamps off (byte-identical
+// output: H5Pset_obj_track_times).
+Hid untimed(hid_t plist_class) {
+  Hid p(H5Pcreate(plist_class), H5Pclose);
+  if (!p.valid() || H5Pset_obj_track_times(p, false) < 0) throw WriteError("cannot turn off HDF5 object timestamps");
+  return p;
 }
 
 // Schema version 2: the table NAME is the group /NAME holding the values /NAME/NAME and
@@ -72,12 +96,12 @@ void write_dataset(hid_t file, const DatasetToWrite& ds, const std::string& crea
       idx[d] = 0;
     }
   }
-  Hid group(H5Gcreate2(file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  Hid group(H5Gcreate2(file, name.c_str(), H5P_DEFAULT, untimed(H5P_GROUP_CREATE), H5P_DEFAULT), H5Gclose);
   if (!group.valid()) throw WriteError("cannot create group /" + name);
   const bool f32 = t.storage() == lookup::Storage::float32;
   Hid space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
   if (!space.valid()) throw WriteError("cannot create the dataspace of " + name);
-  Hid dset(H5Dcreate2(group, name.c_str(), f32 ? H5T_IEEE_F32LE : H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
+  Hid dset(H5Dcreate2(group, name.c_str(), f32 ? H5T_IEEE_F32LE : H5T_IEEE_F64LE, space, H5P_DEFAULT, untimed(H5P_DATASET_CREATE),
                       H5P_DEFAULT),
            H5Dclose);
   if (!dset.valid()) throw WriteError("cannot create dataset " + name);
@@ -92,7 +116,7 @@ void write_dataset(hid_t file, const DatasetToWrite& ds, const std::string& crea
     hsize_t n = static_cast<hsize_t>(a.n);
     Hid aspace(H5Screate_simple(1, &n, nullptr), H5Sclose);
     if (!aspace.valid()) throw WriteError("cannot create the dataspace of axis " + a.name);
-    Hid ad(H5Dcreate2(group, a.name.c_str(), H5T_IEEE_F64LE, aspace, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+    Hid ad(H5Dcreate2(group, a.name.c_str(), H5T_IEEE_F64LE, aspace, H5P_DEFAULT, untimed(H5P_DATASET_CREATE), H5P_DEFAULT),
            H5Dclose);
     if (!ad.valid()) throw WriteError("cannot create axis " + a.name + " of " + name);
     check(H5Dwrite(ad, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, x.data()), "cannot write axis " + a.name);
@@ -118,8 +142,12 @@ void write_dataset(hid_t file, const DatasetToWrite& ds, const std::string& crea
   attrs["interpolation_first_node"] = std::string(scheme.first_node);
   attrs["interpolation_weights"] = std::string(scheme.weights);
   attrs["storage"] = std::string(lookup::storage_name(t.storage()));
-  attrs.try_emplace("source_commit", std::string(BRDFTAB_SOURCE_COMMIT));
-  attrs.try_emplace("created_utc", created);
+  // Provenance that changes with every build or run (the source commit, the time) only in
+  // stamped runs: byte-identical files otherwise (docs/scenes.md, "reproducible").
+  if (!created.empty()) {
+    attrs.try_emplace("source_commit", std::string(BRDFTAB_SOURCE_COMMIT));
+    attrs.try_emplace("created_utc", created);
+  }
   for (const auto& [k, v] : attrs) hdf5::write_attribute(dset, k, v);
 }
 
@@ -135,14 +163,15 @@ std::vector<unsigned char> build_hdf5_image(const std::vector<DatasetToWrite>& d
   Hid fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   if (!fcpl.valid() || !fapl.valid()) throw WriteError("cannot create HDF5 property lists");
   check(H5Pset_userblock(fcpl, lookup::kDigestBlockBytes), "cannot reserve the digest block");
+  check(H5Pset_obj_track_times(fcpl, false), "cannot turn off HDF5 object timestamps");  // the root group
   check(H5Pset_fapl_core(fapl, std::size_t(1) << 20, 0), "cannot select the in-memory HDF5 driver");
   const std::string name = "brdftab-image-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
   Hid file(H5Fcreate(name.c_str(), H5F_ACC_EXCL, fcpl, fapl), H5Fclose);
   if (!file.valid()) throw WriteError("cannot create the in-memory HDF5 file");
-  const std::string created = utc_now();
+  const std::string created = creation_timestamp();
   std::map<std::string, AttributeValue> fattrs = file_attributes;
   fattrs["schema_version"] = lookup::kSchemaVersion;
-  fattrs.try_emplace("created_utc", created);
+  if (!created.empty()) fattrs.try_emplace("created_utc", created);
   for (const auto& [k, v] : fattrs) hdf5::write_attribute(file, k, v);
   for (const auto& ds : datasets) write_dataset(file, ds, created);
   check(H5Fflush(file, H5F_SCOPE_GLOBAL), "cannot flush the in-memory file");

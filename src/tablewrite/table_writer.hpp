@@ -28,7 +28,8 @@ using AttributeValue = lookup::Attribute;
 // schema version 2 (group /NAME: values /NAME/NAME, axes /NAME/<axis> as dimension scales
 // with transform_formula, inverse_formula, scale, u_first, u_step; README "Table file
 // format") and adds the standard attributes (schema_version, quantity, interpolation and
-// its spelled-out scheme, storage, source_commit, created_utc) itself; the generator supplies domain, max_abs_error, max_rel_error,
+// its spelled-out scheme, storage, and, only when SOURCE_DATE_EPOCH or BRDFTAB_TIMESTAMP=now is set,
+// source_commit and created_utc) itself; the generator supplies domain, max_abs_error, max_rel_error,
 // generator, generator_version, method, and anything else it measured.
 struct DatasetToWrite {
   lookup::Table table;

@@ -1,0 +1,248 @@
+#include "lookup/scene_set.hpp"
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "lookup/fresnel.hpp"
+#include "lookup/ghs_sigma_rel.hpp"
+#include "lookup/hfunc_schema.hpp"
+#include "lookup/ls.hpp"
+#include "lookup/smith_gbeckmann.hpp"
+
+namespace brdftab::lookup {
+
+namespace {
+
+constexpr std::size_t kMaxIndexBytes = std::size_t(64) << 20;
+
+[[noreturn]] void bad(const std::filesystem::path& f, std::size_t line, const std::string& what) {
+  throw TableFileError("scene index '" + f.string() + "', line " + std::to_string(line) + ": " + what);
+}
+
+double parse_number(const std::filesystem::path& f, std::size_t line, const std::string& s) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != s.size() || !std::isfinite(v)) bad(f, line, "'" + s.substr(0, 40) + "' is not a finite number");
+  return v;
+}
+
+
+
+}  // namespace
+
+SceneSet::SceneSet(std::filesystem::path dir, OpenOptions options) : tables_(dir, options) {
+  const auto path = dir / "scene.index";
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw TableFileError("scene folder '" + dir.string() + "': no readable scene.index (" + ec.message() + ")");
+  if (size > kMaxIndexBytes) throw TableFileError("scene index '" + path.string() + "' is larger than 64 MiB");
+  std::ifstream in(path);
+  std::string text;
+  std::size_t n = 0;
+  static const std::regex name_re("[A-Za-z0-9_.-]{1,64}"), word_re("[A-Za-z0-9_.-]{1,255}");
+  Entry* cur = nullptr;
+  for (std::string line; std::getline(in, line);) {
+    ++n;
+    std::istringstream ls(line);
+    std::vector<std::string> w;
+    for (std::string t; ls >> t;) w.push_back(t);
+    if (n == 1) {
+      if (line != "brdftab-scene-index 1") bad(path, n, "not a brdftab scene index (expected 'brdftab-scene-index 1')");
+      continue;
+    }
+    if (w.empty()) bad(path, n, "empty line");
+    for (const auto& t : w)
+      if (!std::regex_match(t, word_re)) bad(path, n, "unexpected characters in '" + t.substr(0, 40) + "'");
+    const std::string& k = w[0];
+    if (k == "content_key" && w.size() == 2 && !cur) {
+      key_ = w[1];
+    } else if (k == "material" && w.size() == 3 && !cur) {
+      if (!std::regex_match(w[1], name_re)) bad(path, n, "material name '" + w[1] + "' is not [A-Za-z0-9_.-]{1,64}");
+      if (entries_.count(w[1])) bad(path, n, "material '" + w[1] + "' appears twice");
+      cur = &entries_[w[1]];
+      cur->name = w[1];
+      cur->model = w[2];
+    } else if ((k == "param" || k == "scalar") && w.size() == 3 && cur) {
+      (k == "param" ? cur->params : cur->scalars)[w[1]] = parse_number(path, n, w[2]);
+    } else if (k == "table" && w.size() == 4 && cur) {
+      if (!cur->tables.emplace(w[1], std::make_pair(w[2], w[3])).second) bad(path, n, "role '" + w[1] + "' twice");
+    } else if (k == "end" && w.size() == 1 && cur) {
+      cur = nullptr;
+    } else {
+      bad(path, n, "unexpected '" + line.substr(0, 60) + "'");
+    }
+  }
+  if (n == 0) bad(path, 1, "empty file");
+  if (cur) bad(path, n, "material '" + cur->name + "' has no 'end'");
+  if (key_.empty()) bad(path, 2, "no content_key line");
+}
+
+SceneSet::~SceneSet() = default;
+
+std::vector<std::string> SceneSet::material_names() const {
+  std::vector<std::string> v;
+  for (const auto& [name, e] : entries_) v.push_back(name);
+  return v;
+}
+
+const SceneMaterialHandle& SceneSet::material(const std::string& name) {
+  std::lock_guard lock(mutex_);
+  if (auto it = handles_.find(name); it != handles_.end()) return *it->second;
+  auto e = entries_.find(name);
+  if (e == entries_.end()) throw TableFileError("scene: no material named '" + name.substr(0, 64) + "'");
+  auto h = std::make_unique<SceneMaterialHandle>(e->second, tables_);
+  return *handles_.emplace(name, std::move(h)).first->second;
+}
+
+// The tables of one material, checked against their family schema when loaded.
+struct SceneMaterialHandle::Impl {
+  const LoadedTable* g1 = nullptr;  // slice (1-D on b) or grid (p, b)
+  bool g1_slice = false;
+  double m1 = 0;
+  std::optional<GhsSigmaRelMaterial> sigma_slice;
+  std::optional<GhsSigmaRelGrid> sigma_grid;
+  const LoadedTable* albedo = nullptr;
+  bool albedo_slice = false;
+  const LoadedTable* kd = nullptr;
+  const LoadedTable* h[3] = {nullptr, nullptr, nullptr};
+  bool h_slice[3] = {false, false, false};
+  std::optional<FresnelDrTable> dr;
+  std::optional<FresnelAvgConductorTable> avg;
+  double c = NAN, kd_value = NAN;
+};
+
+namespace {
+std::string where(const SceneSet::Entry& e, const std::string& role) { return "scene material '" + e.name + "', role '" + role + "'"; }
+}  // namespace
+
+SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tables) : e_(e), impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  try {
+    for (const auto& [role, fd] : e_.tables) {
+      const LoadedTable& t = tables.get(fd.first, fd.second);
+      const std::string& ds = fd.second;
+      if (role == "g1") {
+        m.g1 = &t;
+        m.g1_slice = schema::smith_gbeckmann::kG1Material.matches(ds);
+        if (m.g1_slice) {
+          schema::check_table(t.table, t.info.attribute_string("quantity"), schema::smith_gbeckmann::kG1Material);
+          m.m1 = schema::smith_gbeckmann::first_moment(t.info.attribute_number("p", NAN));
+        } else {
+          SmithGBeckmannTable check(t.table);
+          m.m1 = schema::smith_gbeckmann::first_moment(param("p"));
+        }
+      } else if (role == "sigma_rel2") {
+        if (schema::ghs_sigma_rel::kMaterial.matches(ds)) m.sigma_slice.emplace(t);
+        else m.sigma_grid.emplace(t);
+      } else if (role == "albedo") {
+        m.albedo = &t;
+        m.albedo_slice = schema::ls::kAlbedoMaterial.matches(ds);
+        schema::check_table(t.table, t.info.attribute_string("quantity"),
+                            m.albedo_slice ? schema::ls::kAlbedoMaterial : schema::ls::kAlbedo);
+        if (m.albedo_slice) m.c = t.info.attribute_number("ls_c", NAN), m.kd_value = t.info.attribute_number("ls_kd", NAN);
+      } else if (role == "kd") {
+        LsKdTable check(t.table);
+        m.kd = &t;
+      } else if (role == "H0" || role == "H1" || role == "H2") {
+        const int k = role[1] - '0';
+        const auto kind = static_cast<schema::hfunc::Kind>(k + 1);
+        m.h[k] = &t;
+        m.h_slice[k] = schema::hfunc::material_dataset(kind).matches(ds);
+        schema::check_table(t.table, m.h_slice[k] ? schema::hfunc::material_dataset(kind) : schema::hfunc::dataset(kind, false));
+        if (m.h_slice[k] && std::isnan(m.c)) m.c = t.info.attribute_number("ls_c", NAN);
+      } else if (role == "F_dr") {
+        m.dr.emplace(t.table);
+      } else if (role == "F_avg") {
+        m.avg.emplace(t.table);
+      } else {
+        throw TableFileError("unknown role (this library is older than the scene index?)");
+      }
+    }
+  } catch (const TableFileError& ex) {
+    throw TableFileError("scene material '" + e_.name + "': " + ex.what());
+  } catch (const std::exception& ex) {
+    throw TableFileError("scene material '" + e_.name + "': " + ex.what());
+  }
+  // c and k_d of an LS material: the parameter, else the exact value stored with a slice,
+  // else the k_d table (inverted for c).
+  if (e_.model == "ls") {
+    if (has_param("c")) m.c = param("c");
+    if (has_param("k_d") && std::isnan(m.kd_value)) m.kd_value = param("k_d");
+    if (std::isnan(m.c) && m.kd) m.c = ls_c_from_kd(LsKdTable(m.kd->table), m.kd_value);
+    if (std::isnan(m.kd_value) && m.kd) m.kd_value = lookup::ls_kd(LsKdTable(m.kd->table), m.c);
+  }
+}
+
+SceneMaterialHandle::~SceneMaterialHandle() = default;
+
+double SceneMaterialHandle::param(const std::string& key) const {
+  auto it = e_.params.find(key);
+  if (it == e_.params.end()) throw std::out_of_range("scene material '" + e_.name + "' has no parameter '" + key + "'");
+  return it->second;
+}
+
+bool SceneMaterialHandle::has(const std::string& role) const {
+  return e_.tables.count(role) != 0 || e_.scalars.count(role) != 0;
+}
+
+namespace {
+[[noreturn]] void missing(const SceneSet::Entry& e, const std::string& role) {
+  throw std::logic_error(where(e, role) + ": the scene has no table or value for it (model '" + e.model + "')");
+}
+}  // namespace
+
+double SceneMaterialHandle::g1(double a) const {
+  const Impl& m = *impl_;
+  if (!m.g1) missing(e_, "g1");
+  if (m.g1_slice) return m.g1->table.eval1(a * m.m1);
+  return m.g1->table.eval2(param("p"), a * m.m1);
+}
+
+double SceneMaterialHandle::sigma_rel2(double s) const {
+  const Impl& m = *impl_;
+  if (m.sigma_slice) return (*m.sigma_slice)(s);
+  if (m.sigma_grid) return ghs_sigma_rel2(*m.sigma_grid, param("B"), param("c"), s);
+  missing(e_, "sigma_rel2");
+}
+
+double SceneMaterialHandle::ls_c() const {
+  if (std::isnan(impl_->c)) missing(e_, "c");
+  return impl_->c;
+}
+
+double SceneMaterialHandle::ls_kd() const {
+  if (std::isnan(impl_->kd_value)) missing(e_, "kd");
+  return impl_->kd_value;
+}
+
+double SceneMaterialHandle::ls_albedo(double mu) const {
+  const Impl& m = *impl_;
+  if (!m.albedo) missing(e_, "albedo");
+  return m.albedo_slice ? m.albedo->table.eval1(mu) : m.albedo->table.eval2(ls_c(), mu);
+}
+
+double SceneMaterialHandle::h(int k, double mu) const {
+  const Impl& m = *impl_;
+  if (k < 0 || k > 2 || !m.h[k]) missing(e_, "H" + std::to_string(k));
+  return m.h_slice[k] ? m.h[k]->table.eval1(mu) : m.h[k]->table.eval2(ls_c(), mu);
+}
+
+double SceneMaterialHandle::fresnel_dr() const {
+  if (auto it = e_.scalars.find("F_dr"); it != e_.scalars.end()) return it->second;
+  if (impl_->dr) return lookup::fresnel_dr(*impl_->dr, param("eta"));
+  missing(e_, "F_dr");
+}
+
+double SceneMaterialHandle::fresnel_avg() const {
+  if (auto it = e_.scalars.find("F_avg"); it != e_.scalars.end()) return it->second;
+  if (impl_->avg) return lookup::fresnel_avg_conductor(*impl_->avg, param("n"), param("k"));
+  missing(e_, "F_avg");
+}
+
+}  // namespace brdftab::lookup
