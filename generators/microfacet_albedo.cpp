@@ -210,6 +210,9 @@ int mu_points(double lo, double hi, double step) {
 BuiltTable finish(TableSpec spec, const RowFunction& row, const GenerateContext& ctx) {
   spec.generator = "microfacet_albedo";
   spec.interpolation = lookup::Interpolation::cubic;
+  // split_bias falls to ~1e-7 at normal incidence and small alpha: relative error only
+  // where the value exceeds 1e-3 (absolute error everywhere).
+  spec.rel_floor = 1e-3;
   BuiltTable t = build_table(spec, row, ctx);
   t.dataset.attributes["source"] = kSource;
   return t;
@@ -337,18 +340,19 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
   return tables;
 }
 
-// < 1 s: Beckmann only (~0.3 ms per E at alpha >= 0.3, mu >= 0.1), 10 x 17 grid, 8 averages.
+// < 1 s: Beckmann only (~0.2 ms per E at alpha >= 0.5, mu >= 0.1), 7 x 31 grid, 768 error
+// samples per table (the conformance test compares maxima over two seeds), 6 + 16 averages.
 Config test_config() {
   Config c;
   c.ggx = false;
-  c.alpha_lo = 0.3, c.alpha_hi = 1.0;
+  c.alpha_lo = 0.5, c.alpha_hi = 1.0;
   c.mu_lo = 0.1, c.mu_hi = 1.0;
-  c.compact_log_alpha_step = 0.15, c.compact_mu_step = 0.15;
+  c.compact_log_alpha_step = 0.12, c.compact_mu_step = 0.03;
   c.precise = false;
-  c.avg_log_alpha_step = 0.2;
+  c.avg_log_alpha_step = 0.14;
   c.gbeckmann = false;
-  c.error_rows = 8, c.error_per_row = 8;
-  c.avg_error_points = 8;
+  c.error_rows = 32, c.error_per_row = 24;
+  c.avg_error_points = 16;
   return c;
 }
 
