@@ -30,7 +30,8 @@ struct Config {
   double mu_lo = 1e-4, mu_hi = 1.0;
   double mu_step = 1.0 / 48;  // in u = mu / (k + mu), k = mu_scale: 44 points
   double mu_scale = 0.1;
-  int error_points = 32;  // ~20 ms each (alpha_n = 0.01, exact Fresnel)
+  int error_points = 64;  // ~20 ms each (alpha_n = 0.01, exact Fresnel); the stated error is their maximum:
+                          // a re-measurement with another seed finds up to 1.4x it (validate margin 1.5)
 };
 
 Config read_config(const nlohmann::json& entry);
