@@ -28,9 +28,10 @@ struct Config {
                                      {"vase", 0.05, 0.0, 0.01, 0.15, 7.0},
                                      {"speedshape", 0.04, 0.0, 0.03, 0.1, 5.0}};
   double mu_lo = 1e-4, mu_hi = 1.0;
-  double mu_step = 1.0 / 48;  // in u = mu / (k + mu), k = mu_scale: 44 points
+  double mu_step = 1.0 / 48;  // in u = mu / (k + mu), k = mu_scale: 45 points
   double mu_scale = 0.1;
-  int error_points = 32;  // ~20 ms each (alpha_n = 0.01, exact Fresnel)
+  int error_points = 64;  // ~20 ms each (alpha_n = 0.01, exact Fresnel); the stated error is their maximum:
+                          // a re-measurement with another seed finds up to 1.4x it (validate margin 1.5)
 };
 
 Config read_config(const nlohmann::json& entry);
