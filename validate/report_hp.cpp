@@ -148,8 +148,8 @@ void energy_audit(ReportContext& ctx, const std::vector<gen::hp::Material>& mats
     double best = 0;
     std::string at;
     for (double sl : {0.01, 0.1, 0.5})
-      for (double beta : {0.01, 0.1, 0.5, 1.0})
-        for (double p : {0.3, 1.0, 3.0})
+      for (double beta : {0.01, 0.1, 1.0})
+        for (double p : {0.3, 3.0})
           for (double B : {1.0, 10.0}) {
             HpMaterial m;
             m.lambda_um = 0.5;
@@ -282,10 +282,10 @@ void eq31_error_map(ReportContext& ctx) {
     const HpExactIngredients ing(m);
     const HpBrdf f(m, ing);
     std::vector<double> errs;
-    for (int a = 0; a < 8; ++a)
-      for (int b = 0; b < 8; ++b) {
-        const double ti = 0.05 + a * 1.3 / 7, to = 0.05 + b * 1.3 / 7;
-        const double e31 = numerics::hp_diffraction_eq31(f, ti, to, kPi, 1e-5);
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b) {
+        const double ti = 0.05 + a * 1.3 / 5, to = 0.05 + b * 1.3 / 5;
+        const double e31 = numerics::hp_diffraction_eq31(f, ti, to, kPi, 1e-4);
         const double e32 = numerics::hp_diffraction_eq32_uncoloured(f, ti, to, kPi);
         const double rel = (e32 - e31) / e31;
         errs.push_back(std::abs(rel));
