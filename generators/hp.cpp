@@ -1,7 +1,7 @@
 // Table family hp: per-material directional albedo of the Holzschuch-Pacanowski BRDF.
 //   { "materials": [{"name": "nickel_g", "lambda_um": 0.526, "sigma_s_um": 0.1, "beta": 0.05, "p": 0.6,
 //                    "b_um": 5, "c": 2, "n": 1.97, "k": 3.72, "layer": "none", "albedo": 0}, ...],
-//     "mu_points": 41, "tol": 1e-7, "error_points": 24, "precision": "float64" }
+//     "mu_points": 49, "tol": 1e-6, "error_points": 12, "precision": "float64" }
 // Each material gives hp_albedo_{reflection,diffraction,layer}_<name> on theta_i in [0, pi/2].
 #include "generators/hp.hpp"
 
@@ -45,7 +45,6 @@ HpLayer layer_of(const std::string& s) {
 
 std::vector<Material> default_materials() {
   return {{"nickel_g", make(0.526, 0.1, 0.05, 0.6, 5.0, 2.0, 1.97, 3.72, HpLayer::none, 0)},
-          {"gold_r", make(0.645, 0.03, 0.03, 0.5, 8.0, 2.5, 0.17, 3.15, HpLayer::none, 0)},
           {"plastic_g", make(0.526, 0.02, 0.08, 1.0, 10.0, 2.0, 1.5, 0, HpLayer::plastic, 0.5)},
           {"stone_g", make(0.526, 0.15, 0.2, 1.0, 3.0, 2.5, 1.6, 0, HpLayer::subsurface, 0.9)}};
 }
@@ -146,7 +145,7 @@ std::vector<BuiltTable> build_material(const Material& mm, const Config& c, cons
     spec.error_rows = 1;
     spec.error_per_row = c.error_points;
     const RowFunction row = pointwise_parallel_row([f, tol, part](double mu) {
-      const numerics::HpIncident in = f->incident(std::acos(std::clamp(mu, 0.0, 1.0)));
+      const numerics::HpIncident in = f->incident(std::acos(std::clamp(mu, 1e-9, 1.0)));  // limit at 0: schema
       if (part == 0) return numerics::hp_albedo_reflection(*f, in, tol);
       if (part == 1) return numerics::hp_albedo_diffraction(*f, in, tol);
       return numerics::hp_albedo_layer(*f, in, tol);

@@ -10,9 +10,11 @@ namespace brdftab::schema::hp {
 
 inline constexpr std::string_view kFile = "hp.h5";
 
-// cos(theta_i): the albedo varies fastest at grazing incidence (G1(theta_i) -> 0 linearly in
-// cos theta_i), where a theta_i axis spreads its points thinnest.
-inline constexpr AxisSchema kCosThetaI{"cos_theta_i", lookup::Transform::identity, "1"};
+// cos(theta_i) on a sqrt axis: the albedo varies fastest at grazing incidence (the diffraction
+// weight 1 - A of Eq. 37 falls to 0 within cos theta_i ~ 0.01). At cos theta_i = 0 the tables
+// hold the limit cos theta_i -> 0+ (computed at cos theta_i = 1e-9): the reflection albedo
+// tends to a non-zero value there, while the BRDF at exactly theta_i = pi/2 is 0 (G1 = 0).
+inline constexpr AxisSchema kCosThetaI{"cos_theta_i", lookup::Transform::sqrt, "1"};
 inline constexpr DatasetSchema kReflection{"hp_albedo_reflection_", true,
                                            "albedo of the reflection lobe (Eq. 35) of material '", 1, {kCosThetaI}};
 inline constexpr DatasetSchema kDiffraction{"hp_albedo_diffraction_", true,

@@ -45,7 +45,8 @@ double hp_albedo_reflection(const HpBrdf& f, const HpIncident& in, double tol) {
       const double chh = 1 / std::sqrt(1 + t * t);  // cos theta_h
       const double q = si * t * cph + ci;            // (i . h) / cos theta_h
       const double cos_d = q * chh;
-      const double oz = 2 * cos_d * chh - ci;  // o = 2 (i.h) h - i
+      // o = 2 (i.h) h - i: o.z = 2 q cos^2(theta_h) - ci = (2 si t cph + ci (1 - t^2)) / (1 + t^2).
+      const double oz = (2 * si * t * cph + ci * (1 - t) * (1 + t)) / (1 + t * t);
       if (!(oz > 0 && q > 0)) return 0.0;
       const double dens = norm * sl * sl * std::exp(-std::pow(sl, 2 * m.p));
       return dens * f.reflection_attenuation(cos_d) * f.fresnel(cos_d) * ing.g1_quadrature(std::min(oz, 1.0)) * q;
@@ -61,22 +62,45 @@ double hp_albedo_diffraction(const HpBrdf& f, const HpIncident& in, double tol) 
   const double s = in.sin_i, B = f.B(), c = m.c;
   const double M = ghs_radial_cdf(B, c, 1 + s);  // Eq. 61
   const HpIngredients& ing = f.ingredients();
+  const double ci = in.cos_i;
+  const double one_minus_s = ci * ci / (1 + s);  // 1 - s without cancellation at grazing
   auto inner = [&](double u) {
     const double r = std::min(ghs_diffraction_radius(B, c, M, u), 1 + s);  // Eq. 60
-    const double phi_max = ghs_phi_max(r, s);                               // Eq. 62
-    auto g = [&](double psi) {
-      const double ox = -s + r * std::cos(psi), oy = r * std::sin(psi);
-      const double rho2 = ox * ox + oy * oy;
-      if (!(rho2 < 1)) return 0.0;
-      const double oz = std::sqrt(1 - rho2);
-      const HpVec3 o{ox, oy, oz};
-      return f.one_minus_a(in.cos_i, oz) * f.diffraction_color(in, o) * ing.g1_quadrature(oz);
+    // Eq. 62 with q = (r^2 + s^2 - 1)/(2 r s) = (r - cos_i)(r + cos_i)/(2 r s) (no cancellation as s -> 1).
+    double phi_max = kPi;
+    if (s > 0 && r > one_minus_s) phi_max = std::acos(std::clamp((r - ci) * (r + ci) / (2 * r * s), -1.0, 1.0));
+    if (s == 0 && r > 1) phi_max = 0;
+    // cos(theta_o)^2 = 1 - |o_p|^2 = (1-s-r)(1+s+r) + 4 s r cos^2(psi/2) in general, and
+    // = 4 s r sin((phi_max+psi)/2) sin((phi_max-psi)/2) on an arc that ends on the horizon:
+    // both free of the cancellation of 1 - |o_p|^2 near grazing.
+    auto g = [&](double psi, double oz2) {
+      if (!(oz2 > 0)) return 0.0;
+      const double oz = std::sqrt(oz2);
+      const HpVec3 o{-s + r * std::cos(psi), r * std::sin(psi), oz};
+      return f.one_minus_a(ci, oz) * f.diffraction_color(in, o) * ing.g1_quadrature(std::min(oz, 1.0));
     };
-    return integrate(g, 0.0, phi_max, tol * 0.1);
+    if (phi_max >= kPi) {
+      auto gf = [&](double psi) {
+        const double ch = std::cos(0.5 * psi);
+        return g(psi, (one_minus_s - r) * (1 + s + r) + 4 * s * r * ch * ch);
+      };
+      return integrate(gf, 0.0, kPi, tol * 0.1);
+    }
+    // The arc ends on the horizon, where cos(theta_o) ~ sqrt(phi_max - psi): psi = phi_max (1 - w^2)
+    // makes the integrand smooth in w.
+    auto gw = [&](double w) {
+      const double d = phi_max * w * w, psi = phi_max - d;
+      return g(psi, 4 * s * r * std::sin(phi_max - 0.5 * d) * std::sin(0.5 * d)) * 2 * phi_max * w;
+    };
+    return integrate(gw, 0.0, 1.0, tol * 0.1);
   };
-  // Split at the kink u(1 - s) where phi_max leaves pi.
-  const double uk = (s > 0 && s < 1) ? std::clamp(ghs_radial_cdf(B, c, 1 - s) / M, 0.0, 1.0) : 0.0;
-  const double I = integrate(inner, 0.0, uk, tol) + integrate(inner, uk, 1.0, tol);
+  // Split at the kink u(1 - s) where phi_max leaves pi; on [u_k, 1] phi_max has square-root ends
+  // at both r = 1 - s and r = 1 + s: u = u_k + (1 - u_k)(3 w^2 - 2 w^3) smooths both.
+  const double uk = (s > 0 && s < 1) ? std::clamp(ghs_radial_cdf(B, c, 1 - s) / M, 0.0, 1.0) : (s >= 1 ? 0.0 : 1.0);
+  auto outer = [&](double w) {
+    return inner(uk + (1 - uk) * w * w * (3 - 2 * w)) * (1 - uk) * 6 * w * (1 - w);
+  };
+  const double I = integrate(inner, 0.0, uk, tol) + (uk < 1 ? integrate(outer, 0.0, 1.0, tol) : 0.0);
   return f.diffraction_scale() * M / (kPi * in.sigma_rel2) * in.g1_i * I;
 }
 

@@ -29,8 +29,8 @@ HpExactIngredients::HpExactIngredients(const HpMaterial& m)
 }
 
 double HpExactIngredients::g1_quadrature(double mu) const {
-  constexpr int kIntervals = 4096;
-  constexpr double kLogALo = -6 * 2.302585092994046, kLogAHi = 6 * 2.302585092994046;  // a in [1e-6, 1e6]
+  constexpr int kIntervals = 8192;
+  constexpr double kLogALo = -8 * 2.302585092994046, kLogAHi = 12 * 2.302585092994046;  // a in [1e-8, 1e12]
   constexpr double kStep = (kLogAHi - kLogALo) / kIntervals;
   std::call_once(once_, [this] {
     grid_.resize(kIntervals + 1);

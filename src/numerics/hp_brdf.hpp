@@ -52,8 +52,8 @@ class HpIngredients {
 
 // The exact ingredients (no tables) for one material. g1 calls the exact Smith G1
 // (smith_gbeckmann_lambda.hpp, ~10 us); g1_quadrature interpolates, by 4-point Lagrange
-// on a uniform grid of 4097 exact values in ln(a), a = beta tan(theta) in [1e-6, 1e6]
-// (exact outside), built on first use (~40 ms, thread-safe): G1 is smooth in ln(a) for every
+// on a uniform grid of 8193 exact values in ln(a), a = beta tan(theta) in [1e-8, 1e12]
+// (exact outside), built on first use (~80 ms, thread-safe): G1 is smooth in ln(a) for every
 // p (in a = tan/(1+tan)-like variables it is not: at p = 0.1 it falls steeply near a = 0),
 // and the interpolation error, measured against the exact G1 at random points in
 // tests/test_hp_albedo.cpp, is below 1e-9 (measured 3.2e-10) for p in [0.1, 10].
