@@ -121,7 +121,7 @@ std::vector<Quantity> quantities() {
       "corrected form";
   a.parameters = material_parameters();
   a.parameters.push_back({"theta_i", 0.0, kPi / 2, false, false, false, "[0, pi/2]"});
-  a.outputs = {"albedo_reflection", "albedo_diffraction", "albedo_layer", "albedo"};
+  a.outputs = {"albedo_reflection", "albedo_diffraction", "albedo_layer", "albedo_total"};
   a.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
     const numerics::HpMaterial m = numerics::hp_material_from_values(in.data());
     const numerics::HpExactIngredients ing(m);

@@ -22,6 +22,12 @@ def tables(max_rank=4):
     return out
 
 
+def ident(name):
+    """The file and identifier stem export uses: the table name with every character that
+    is not a letter, digit or '_' replaced by '_' (e.g. p0.5 -> p0_5)."""
+    return "".join(c if c.isalnum() or c == "_" else "_" for c in name)
+
+
 def export(path, name, fmt, out):
     r = subprocess.run([EXE, "export", path, name, "--format", fmt, "--out", str(out)], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
@@ -33,12 +39,12 @@ def test_npy_holds_the_values_and_axes(tmp_path):
         files = export(path, name, "npy", tmp_path)
         with h5py.File(path, "r") as f:
             v = f[name][name]
-            a = np.load(tmp_path / f"{name}.npy")
+            a = np.load(tmp_path / f"{ident(name)}.npy")
             assert a.dtype == v.dtype and a.shape == v.shape
             np.testing.assert_array_equal(a, v[()])
             for dim in v.dims:
                 axis = dim[0].attrs["name"]
-                np.testing.assert_array_equal(np.load(tmp_path / f"{name}.{axis}.npy"), dim[0][()])
+                np.testing.assert_array_equal(np.load(tmp_path / f"{ident(name)}.{ident(axis)}.npy"), dim[0][()])
             assert len(files) == 1 + v.ndim
 
 
@@ -48,13 +54,13 @@ def test_glsl_compiles_for_every_1d_2d_table(tmp_path):
     count = 0
     for path, name in tables(max_rank=2):
         export(path, name, "glsl", tmp_path)
-        snippet = (tmp_path / f"{name}.glsl").read_text()
+        snippet = (tmp_path / f"{ident(name)}.glsl").read_text()
         with h5py.File(path, "r") as f:
             rank = f[name][name].ndim
         args = "p.x" if rank == 1 else "p.x, p.y"
-        shader = tmp_path / f"{name}.frag"
+        shader = tmp_path / f"{ident(name)}.frag"
         shader.write_text("#version 330 core\nuniform sampler2D tab;\nin vec2 p;\nout vec4 color;\n" + snippet +
-                          f"void main() {{ color = vec4({name}_lookup(tab, {args})); }}\n")
+                          f"void main() {{ color = vec4({ident(name)}_lookup(tab, {args})); }}\n")
         r = subprocess.run([validator, str(shader)], capture_output=True, text=True)
         assert r.returncode == 0, r.stdout + r.stderr
         count += 1
