@@ -31,6 +31,7 @@
 #include <cstring>
 #include <istream>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <span>
 #include <stdexcept>
@@ -214,6 +215,17 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
     for (const auto& x : all_quantities()) names.push_back(x.name);
     err << "brdftab eval: unknown quantity '" << o.quantity << "' (known: " << list(names) << ")\n";
     return 2;
+  }
+  // `--dataset` naming a per-material table: q for that material (eval_material.cpp).
+  std::optional<Quantity> material;
+  if (!o.dataset.empty() && o.method == "table") {
+    try {
+      material = material_quantity(*q, o.tables_dir, o.dataset);
+    } catch (const std::exception& e) {
+      err << "brdftab eval " << q->name << " --dataset " << escape_control(o.dataset) << ": " << e.what() << "\n";
+      return 2;
+    }
+    if (material) q = &*material;
   }
   auto method_it = q->methods.find(o.method);
   if (method_it == q->methods.end()) {
@@ -414,7 +426,7 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
         spool_out.write(ch.text[r].data(), ch.text[r].size());
       }
     }
-    if (tables && !o.dataset.empty() && !tables->substituted()) {
+    if (tables && !o.dataset.empty() && !material && !tables->substituted()) {
       err << what << " --dataset " << escape_control(o.dataset) << ": no such dataset in the table file(s) that "
           << q->name << " reads\n";
       return 2;

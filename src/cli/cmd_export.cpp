@@ -1,4 +1,4 @@
-// `brdftab export FILE.h5 DATASET --format header|npy|glsl [--out DIR]`: one table in a form
+// `brdftab export FILE.h5 DATASET --format header|npy|glsl|exr [--out DIR]`: one table in a form
 // a renderer or GPU program takes without HDF5.
 //   header  DIR/DATASET.hpp: constexpr arrays (values row-major, last axis fastest; each
 //           axis' values) and the axis metadata (name, transform, scale, u_first, u_step,
@@ -11,6 +11,9 @@
 //           so hardware filtering is linear interpolation in the transformed coordinate,
 //           the table's own scheme for `linear` tables (up to the GPU's 8-bit filter
 //           weights, README "Exports").
+//   exr     DIR/DATASET.exr: for 1-D and 2-D tables, an OpenEXR image of the values (float32,
+//           channel Y, width = last axis) with the axis metadata as header attributes
+//           (export_exr.hpp); the layout the GLSL snippet samples.
 // The numbers are written in shortest round-trip form (%.17g / %.9g), so they read back
 // as the same doubles / floats.
 #include <cctype>
@@ -27,6 +30,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/csv.hpp"
+#include "cli/export_exr.hpp"
 #include "cli/foreign_isolation.hpp"
 #include "lookup/table_file.hpp"
 
@@ -227,9 +231,9 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
     return 1;
   }
   const auto& t = lt.table;
-  if (o.format == "glsl" && t.rank() > 2) {
-    err << "brdftab export: --format glsl: table '" << escape_control(o.dataset) << "' has rank " << t.rank()
-        << "; GLSL export covers 1-D and 2-D tables\n";
+  if ((o.format == "glsl" || o.format == "exr") && t.rank() > 2) {
+    err << "brdftab export: --format " << o.format << ": table '" << escape_control(o.dataset) << "' has rank "
+        << t.rank() << "; " << (o.format == "glsl" ? "GLSL" : "OpenEXR") << " export covers 1-D and 2-D tables\n";
     return 2;
   }
   try {
@@ -251,6 +255,12 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
         written.push_back(o.out_dir / (base + "." + identifier(t.axis(d).name) + ".npy"));
         write_file(written.back(), npy(axis_values(t.axis(d)), {t.axis(d).n}, false));
       }
+    } else if (o.format == "exr") {
+      written.push_back(o.out_dir / (base + ".exr"));
+      write_exr(lt, source, written.back());
+      if (t.storage() != lookup::Storage::float32)
+        err << "brdftab export: note: '" << escape_control(t.name())
+            << "' is stored as float64; the OpenEXR image holds it rounded to float32\n";
     } else {
       written.push_back(o.out_dir / (base + ".glsl"));
       write_file(written.back(), glsl_text(lt, source));

@@ -64,10 +64,10 @@ int run_info_json(const std::vector<std::filesystem::path>& files, std::ostream&
 struct ExportOptions {
   std::filesystem::path file;
   std::string dataset;
-  std::string format = "header";  // header | npy | glsl
+  std::string format = "header";  // header | npy | glsl | exr
   std::filesystem::path out_dir = ".";
 };
-// `export`: one table as a C++ header, .npy files or a GLSL snippet (cmd_export.cpp).
+// `export`: one table as a C++ header, .npy files, a GLSL snippet or an OpenEXR image (cmd_export.cpp).
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err);
 
 struct ValidateOptions {

@@ -3,7 +3,9 @@
 //   exact: numerics/ghs_sigma_rel.hpp (1-D form, ~1e-14 relative), B in [1e-100, 1e100],
 //          c in (1, 100], s in [0, 1].
 //   table: the 3-D grid of tables/ghs_sigma_rel.h5 (default B in [0.01, 1000], c in [1, 10]);
-//          a point outside the table's ranges is an error naming the parameter.
+//          a point outside the table's ranges is an error naming the parameter. With
+//          --dataset ghs_sigma_rel2_material_NAME, that material's sigma_rel^2(w) slice
+//          (columns B, c optional, else equal to the material's; quantity.hpp material_quantity).
 #include <cmath>
 #include <string>
 
@@ -46,6 +48,24 @@ std::vector<Quantity> quantities() {
       numerics::throw_domain_error("s", s, "covered by the table's w range " + range(aw));
     out[0] = lookup::ghs_sigma_rel2(grid, B, c, s);
   };
+  // A per-material table (`--dataset ghs_sigma_rel2_material_NAME`): sigma_rel^2(w) at the
+  // material's (B, c).
+  q.material_tables.push_back(
+      {std::string(schema::ghs_sigma_rel::kFile), std::string(schema::ghs_sigma_rel::kMaterial.name),
+       {{"B", "B"}, {"c", "c"}},
+       [](const lookup::LoadedTable& t) -> Method {
+         const lookup::GhsSigmaRelMaterial material(t);  // checks the schema, B and w_scale
+         const double B = t.info.attribute_number("B", NAN), w_scale = t.info.attribute_number("w_scale", NAN);
+         const lookup::Axis aw = t.table.axis(0);
+         return [material, B, w_scale, aw](std::span<const double> in, std::span<double> out, const EvalContext&) {
+           const double s = in[2], w = schema::ghs_sigma_rel::w_of_s(B, s, w_scale);
+           if (!(w >= aw.x_lo - 1e-12 && w <= aw.x_hi + 1e-12))
+             numerics::throw_domain_error("s", s,
+                                          "covered by the table's w range [" + lookup::format_number(aw.x_lo) + ", " +
+                                              lookup::format_number(aw.x_hi) + "] (table range)");
+           out[0] = lookup::ghs_sigma_rel2(material, s);
+         };
+       }});
   return {q};
 }
 

@@ -2,6 +2,7 @@
 //   ls_kd      c -> kd                     exact | table | fit (Eq. 47) | three_term
 //   ls_c       kd -> c                     exact | table (inverse of the k_d table) | fit (Eq. 46)
 //   ls_albedo  c, mu -> A                  exact | table | three_term
+//              (table with --dataset ls_albedo_material_NAME: that material's A(mu) slice)
 //   ls_brdf    c, mu_i, mu_o, phi -> f, f_single, f_multiple
 //              exact (true medium) | three_term | fit (Eq. 17-45 as printed) |
 //              fit_corrected (misprints corrected, validate/ERRATA.md) | fit_fast (Eq. 48)
@@ -16,6 +17,7 @@
 #include "cli/eval_ls_phase.hpp"
 #include "cli/quantity.hpp"
 #include "lookup/ls.hpp"
+#include "lookup/table_file.hpp"
 #include "lookup/table_set.hpp"
 #include "numerics/ls_albedo.hpp"
 #include "numerics/ls_deon_model.hpp"
@@ -104,6 +106,17 @@ std::vector<Quantity> quantities() {
   a.methods["three_term"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
     out[0] = three_term(in[0]).plane_albedo(in[1]);
   };
+  // A per-material table (`--dataset ls_albedo_material_NAME`): A(mu) at the material's c
+  // (attribute ls_c, solved from k_d for a material given by its k_d).
+  a.material_tables.push_back({std::string(schema::ls::kFile), std::string(schema::ls::kAlbedoMaterial.name),
+                               {{"c", "ls_c"}}, [](const lookup::LoadedTable& t) -> Method {
+                                 schema::check_table(t.table, t.info.attribute_string("quantity"),
+                                                     schema::ls::kAlbedoMaterial);
+                                 const lookup::Table* table = &t.table;
+                                 return [table](std::span<const double> in, std::span<double> out, const EvalContext&) {
+                                   out[0] = table->eval1(in[1], lookup::OutOfDomain::error);
+                                 };
+                               }});
 
   Quantity f;
   f.name = "ls_brdf";

@@ -1,15 +1,18 @@
 #pragma once
 // Quantities that `brdftab eval` can compute: their parameters (CSV input columns, with
 // domains), their results (output columns) and the methods that compute them.
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace brdftab::lookup {
 class TableSet;
+struct LoadedTable;
 }
 
 namespace brdftab::cli {
@@ -33,13 +36,37 @@ struct EvalContext {
 // cannot compute (e.g. "no fit exists for mode 2"); eval reports it with the row number.
 using Method = std::function<void(std::span<const double> in, std::span<double> out, const EvalContext&)>;
 
+// Per-material tables that answer a quantity (`eval --method table --dataset PREFIX<material>`,
+// docs/scenes.md): slices of the quantity at a material's fixed parameters.
+struct MaterialTables {
+  std::string file;    // table file in the table folder, e.g. "smith_gbeckmann.h5"
+  std::string prefix;  // dataset-name prefix, e.g. "smith_gbeckmann_g1_material_"
+  // The parameters a material fixes, each with the dataset attribute holding its value
+  // (e.g. {"p", "p"}; {"c", "ls_c"}).
+  std::vector<std::pair<std::string, std::string>> fixed;
+  // The table method for rows of one material, built once from its loaded table. Rows
+  // reach it with every parameter, the fixed ones equal to the material's values.
+  std::function<Method(const lookup::LoadedTable&)> bind;
+};
+
 struct Quantity {
   std::string name;
   std::string description;
   std::vector<Parameter> parameters;
   std::vector<std::string> outputs;
   std::map<std::string, Method> methods;  // keys among "exact", "table", "fit"
+  std::vector<MaterialTables> material_tables;
 };
+
+// `eval --method table --dataset NAME` with NAME a per-material table of q (its file in
+// `tables_dir`): q for that material (eval_material.cpp). The rule: a fixed parameter's
+// column may be left out (the material's value is used); if present, every row must hold
+// exactly the material's value, else the row is refused (exit 2) naming the column, the
+// value, the material's value and the dataset. Only method "table" remains, bound to NAME.
+// nullopt if NAME matches none of q's prefixes; throws std::exception (file or dataset
+// missing, attribute missing or not a number, table not of the family's schema).
+std::optional<Quantity> material_quantity(const Quantity& q, const std::filesystem::path& tables_dir,
+                                          const std::string& dataset);
 
 // Empty if v is a valid value of p, else why not ("is outside the valid domain", ...);
 // the caller appends p.domain. Shared by `eval` and the Python bindings.

@@ -1,5 +1,6 @@
 # Installs brdftab into a scratch prefix, builds tests/consumer against it with
-# find_package(brdftab), and runs it on the committed demo table.
+# find_package(brdftab) (a CXX-only project) and with pkg-config's flags alone, and runs
+# both on the committed demo table. Every include is <brdftab/...>.
 file(REMOVE_RECURSE ${WORK_DIR})
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
@@ -15,9 +16,31 @@ run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer ${SOURCE_DIR}/tables)
 # The installed default tables, found through the library's default search (BRDFTAB_TABLES).
 run(${CMAKE_COMMAND} -E env BRDFTAB_TABLES=${WORK_DIR}/prefix/share/brdftab/tables ${WORK_DIR}/build/consumer)
-# pkg-config file and licence installed.
-foreach(f lib/pkgconfig/brdftab.pc share/doc/brdftab/LICENSE include/brdftab/lookup/version.hpp)
+# pkg-config file, licence, version header and headers installed under include/brdftab/.
+foreach(f lib/pkgconfig/brdftab.pc share/doc/brdftab/LICENSE include/brdftab/lookup/version.hpp
+          include/brdftab/lookup/table_set.hpp)
   if(NOT EXISTS ${WORK_DIR}/prefix/${f})
     message(FATAL_ERROR "not installed: ${f}")
   endif()
 endforeach()
+# pkg-config (relocatable .pc: the scratch prefix, not the configured one): compile and run
+# the same program with its flags alone.
+find_program(PKG_CONFIG pkg-config)
+if(NOT PKG_CONFIG)
+  message(FATAL_ERROR "pkg-config not found (Debian pkg-config; scripts/install-deps.sh)")
+endif()
+set(ENV{PKG_CONFIG_PATH} ${WORK_DIR}/prefix/lib/pkgconfig)
+execute_process(COMMAND ${PKG_CONFIG} --cflags --libs brdftab RESULT_VARIABLE rc OUTPUT_VARIABLE flags
+                ERROR_VARIABLE perr OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "pkg-config --cflags --libs brdftab failed: ${perr}")
+endif()
+execute_process(COMMAND ${PKG_CONFIG} --variable=tablesdir brdftab OUTPUT_VARIABLE tablesdir
+                OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(NOT EXISTS ${tablesdir}/demo.h5)
+  message(FATAL_ERROR "pkg-config tablesdir '${tablesdir}' has no demo.h5")
+endif()
+message(STATUS "pkg-config: ${flags}; tablesdir ${tablesdir}")
+separate_arguments(flag_list UNIX_COMMAND "${flags}")
+run(${CXX} ${SOURCE_DIR}/tests/consumer/main.cpp ${flag_list} -o ${WORK_DIR}/consumer_pc)
+run(${CMAKE_COMMAND} -E env LD_LIBRARY_PATH=${WORK_DIR}/prefix/lib ${WORK_DIR}/consumer_pc ${tablesdir})

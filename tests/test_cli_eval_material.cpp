@@ -1,0 +1,136 @@
+// `eval --method table --dataset NAME` with NAME a per-material table (a 1-D slice at a
+// material's fixed parameters; quantity.hpp material_quantity): the fixed parameters'
+// columns may be left out, must otherwise equal the material's values (exit 2 naming the
+// column otherwise), and the values agree with the exact numerics within the table's
+// stated error. Each case generates its own small per-material file from a manifest.
+#include <doctest/doctest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "lookup/table_file.hpp"
+
+using brdftab::testing::contains;
+using brdftab::testing::run_cli;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path generate(const std::string& name, const std::string& family_json) {
+  const fs::path d = fs::path(BRDFTAB_TEST_TMP) / ("eval_material_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  std::ofstream(d / "manifest.json") << R"({"schema_version": 1, "tables": {)" << family_json << "}}";
+  const auto r = run_cli("generate -q --manifest '" + (d / "manifest.json").string() + "' --out '" + (d / "t").string() + "'");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  return d / "t";
+}
+
+// The named column of a CSV as numbers.
+std::vector<double> column(const std::string& csv, const std::string& name) {
+  std::istringstream in(csv);
+  std::string line, cell;
+  std::getline(in, line);
+  int idx = -1, i = 0;
+  for (std::istringstream h(line); std::getline(h, cell, ','); ++i)
+    if (cell == name) idx = i;
+  REQUIRE(idx >= 0);
+  std::vector<double> v;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    for (int j = 0; j <= idx; ++j) std::getline(row, cell, ',');
+    v.push_back(std::strtod(cell.c_str(), nullptr));
+  }
+  return v;
+}
+
+std::string eval(const std::string& args, const std::string& input, int expect = 0) {
+  const auto r = run_cli("eval " + args, input);
+  INFO(args << "\n" << r.err);
+  REQUIRE(r.status == expect);
+  return expect == 0 ? r.out : r.err;
+}
+
+}  // namespace
+
+TEST_CASE("eval --dataset smith_gbeckmann_g1_material_NAME: G1 at the material's p, column p optional") {
+  const fs::path dir = generate("smith", R"("smith_gbeckmann": {"compact": false, "precise": false,
+      "materials": [{"name": "gold", "p": 1.7}, {"name": "paint", "p": 0.8}]})");
+  const std::string tables = " --method table --tables '" + dir.string() + "' --dataset smith_gbeckmann_g1_material_gold";
+  const std::string a_values[] = {"0", "0.05", "0.3", "0.9", "2.5", "40"};
+  std::string with_p = "p,a\n", without_p = "a\n";
+  for (const auto& a : a_values) with_p += "1.7," + a + "\n", without_p += a + "\n";
+  const auto table = column(eval("smith_gb" + tables, with_p), "G1");
+  const auto exact = column(eval("smith_gb --method exact", with_p), "G1");
+  CHECK(column(eval("smith_gb" + tables, without_p), "G1") == table);
+  const double stated = brdftab::lookup::load_table(dir / "smith_gbeckmann.h5", "smith_gbeckmann_g1_material_gold")
+                            .info.attribute_number("max_abs_error", NAN);
+  REQUIRE(stated > 0);
+  REQUIRE(stated < 1e-5);
+  REQUIRE(table.size() == std::size(a_values));
+  for (std::size_t i = 0; i < table.size(); ++i) CHECK(std::abs(table[i] - exact[i]) <= stated);
+  // The other material's slice answers differently (it is not the gold table).
+  const auto paint = column(eval("smith_gb --method table --tables '" + dir.string() +
+                                     "' --dataset smith_gbeckmann_g1_material_paint",
+                                 "a\n0.9\n"),
+                            "G1");
+  CHECK(std::abs(paint[0] - table[3]) > 1e-3);
+  // A row that contradicts the material: exit 2 naming the row, the column and both values.
+  const std::string e = eval("smith_gb" + tables, "p,a\n1.7,0.5\n1.8,0.5\n", 2);
+  CHECK(contains(e, "row 2 (line 3), column 'p': value '1.8'"));
+  CHECK(contains(e, "smith_gbeckmann_g1_material_gold' holds p = 1.7"));
+  // A material the file lacks.
+  const std::string missing = eval("smith_gb" + std::string(" --method table --tables '") + dir.string() +
+                                       "' --dataset smith_gbeckmann_g1_material_silver",
+                                   "a\n0.5\n", 2);
+  CHECK(contains(missing, "smith_gbeckmann_g1_material_silver"));
+}
+
+TEST_CASE("eval --dataset ghs_sigma_rel2_material_NAME: sigma_rel^2(s) at the material's B and c") {
+  const fs::path dir = generate("ghs", R"("ghs_sigma_rel": {"materials": [{"name": "gold", "B": 2.5, "c": 2.2}]})");
+  const std::string tables = " --method table --tables '" + dir.string() + "' --dataset ghs_sigma_rel2_material_gold";
+  const std::string s_values[] = {"0", "0.1", "0.5", "0.93", "0.999", "1"};
+  std::string full = "B,c,s\n", s_only = "s\n";
+  for (const auto& s : s_values) full += "2.5,2.2," + s + "\n", s_only += s + "\n";
+  const auto table = column(eval("ghs_sigma_rel2" + tables, full), "sigma_rel2");
+  const auto exact = column(eval("ghs_sigma_rel2 --method exact", full), "sigma_rel2");
+  CHECK(column(eval("ghs_sigma_rel2" + tables, s_only), "sigma_rel2") == table);
+  CHECK(column(eval("ghs_sigma_rel2" + tables, "c,s\n2.2,0.5\n"), "sigma_rel2")[0] == table[2]);
+  const double stated = brdftab::lookup::load_table(dir / "ghs_sigma_rel.h5", "ghs_sigma_rel2_material_gold")
+                            .info.attribute_number("max_abs_error", NAN);
+  REQUIRE(stated > 0);
+  REQUIRE(stated < 1e-5);
+  REQUIRE(table.size() == std::size(s_values));
+  for (std::size_t i = 0; i < table.size(); ++i) CHECK(std::abs(table[i] - exact[i]) <= stated);
+  const std::string e = eval("ghs_sigma_rel2" + tables, "B,c,s\n2.5,3,0.5\n", 2);
+  CHECK(contains(e, "row 1 (line 2), column 'c': value '3'"));
+  CHECK(contains(e, "holds c = 2.2 (its attribute 'c'); give that value or leave the column out"));
+  // The other parameters keep their own domains.
+  CHECK(contains(eval("ghs_sigma_rel2" + tables, "s\n1.5\n", 2), "column 's': value '1.5' is outside the valid domain"));
+}
+
+TEST_CASE("eval --dataset ls_albedo_material_NAME: A(mu) at the material's c (attribute ls_c)") {
+  const fs::path dir = generate("ls", R"("ls": {"kd": false, "albedo": false, "materials": [{"name": "milk", "c": 0.95}]})");
+  const std::string tables = " --method table --tables '" + dir.string() + "' --dataset ls_albedo_material_milk";
+  const std::string mu_values[] = {"0.01", "0.2", "0.5", "1"};
+  std::string full = "c,mu\n", mu_only = "mu\n";
+  for (const auto& mu : mu_values) full += "0.95," + mu + "\n", mu_only += mu + "\n";
+  const auto table = column(eval("ls_albedo" + tables, mu_only), "A");
+  const auto exact = column(eval("ls_albedo --method exact", full), "A");
+  CHECK(column(eval("ls_albedo" + tables, full), "A") == table);
+  const double stated = brdftab::lookup::load_table(dir / "ls.h5", "ls_albedo_material_milk")
+                            .info.attribute_number("max_abs_error", NAN);
+  REQUIRE(stated > 0);
+  REQUIRE(stated < 1e-4);
+  REQUIRE(table.size() == std::size(mu_values));
+  for (std::size_t i = 0; i < table.size(); ++i) CHECK(std::abs(table[i] - exact[i]) <= stated);
+  CHECK(contains(eval("ls_albedo" + tables, "c,mu\n0.9,0.5\n", 2), "column 'c': value '0.9'"));
+}
