@@ -16,6 +16,9 @@ run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer ${SOURCE_DIR}/tables)
 # The installed default tables, found through the library's default search (BRDFTAB_TABLES).
 run(${CMAKE_COMMAND} -E env BRDFTAB_TABLES=${WORK_DIR}/prefix/share/brdftab/tables ${WORK_DIR}/build/consumer)
+# Without BRDFTAB_TABLES: the installed tables, found relative to the installed library
+# (the scratch prefix is not the configured CMAKE_INSTALL_PREFIX).
+run(${CMAKE_COMMAND} -E env --unset=BRDFTAB_TABLES ${WORK_DIR}/build/consumer)
 # pkg-config file, licence, version header and headers installed under include/brdftab/.
 foreach(f lib/pkgconfig/brdftab.pc share/doc/brdftab/LICENSE include/brdftab/lookup/version.hpp
           include/brdftab/lookup/table_set.hpp)
@@ -23,6 +26,19 @@ foreach(f lib/pkgconfig/brdftab.pc share/doc/brdftab/LICENSE include/brdftab/loo
     message(FATAL_ERROR "not installed: ${f}")
   endif()
 endforeach()
+# The installed CLI runs (it finds the installed shared library through its rpath) and
+# reads the installed tables by default from a folder without tables/.
+execute_process(COMMAND ${WORK_DIR}/prefix/bin/brdftab info demo.h5 WORKING_DIRECTORY ${WORK_DIR}/prefix/share/brdftab/tables
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "demo_exp_cos")
+  message(FATAL_ERROR "installed brdftab info failed (${rc}):\n${out}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=BRDFTAB_TABLES ${WORK_DIR}/prefix/bin/brdftab eval demo_exp_cos --method table
+                INPUT_FILE ${SOURCE_DIR}/tests/consumer/demo_input.csv WORKING_DIRECTORY ${WORK_DIR}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "0.8,0.6,0.3708468")
+  message(FATAL_ERROR "installed brdftab eval --method table (installed tables) failed (${rc}):\n${out}${err}")
+endif()
 # pkg-config (relocatable .pc: the scratch prefix, not the configured one): compile and run
 # the same program with its flags alone.
 find_program(PKG_CONFIG pkg-config)
