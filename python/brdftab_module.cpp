@@ -1,7 +1,8 @@
 // `import brdftab`: the exact numerics and the table lookups over NumPy arrays.
 //
 //   brdftab.quantities()                      -> names of the eval quantities
-//   brdftab.h_iso(c=..., mu=..., method="exact", tables=None) -> {"H": array}
+//   brdftab.h_iso(c=..., mu=..., method="exact", tables=None, dataset=None) -> {"H": array}
+//     (dataset: as `eval --dataset`, a compact variant or a per-material table)
 //   brdftab.Table(path, dataset)(x0, x1, ...) -> interpolated values (NumPy broadcasting)
 //
 // Every `brdftab eval` quantity is a function of the same name whose keyword arguments are
@@ -48,8 +49,25 @@ std::string join(const std::vector<std::string>& v) {
   return s;
 }
 
-py::dict evaluate(const cli::Quantity& q, const std::string& method, const std::optional<std::string>& tables,
-                  const py::kwargs& kwargs) {
+py::dict evaluate(const cli::Quantity& q_in, const std::string& method, const std::optional<std::string>& tables,
+                  const std::optional<std::string>& dataset, const py::kwargs& kwargs) {
+  // dataset=NAME as `eval --dataset NAME`: a per-material table (its fixed columns
+  // optional), else a same-axes variant substituted for the default table.
+  const cli::Quantity* qp = &q_in;
+  std::optional<cli::Quantity> material;
+  std::unique_ptr<lookup::TableSet> substituting;
+  const std::filesystem::path dir = tables ? std::filesystem::path(*tables) : cli::default_tables_dir();
+  if (dataset) {
+    if (method != "table") throw py::value_error(q_in.name + ": dataset needs method='table'");
+    try {
+      material = cli::material_quantity(q_in, dir, *dataset);
+    } catch (const std::exception& e) {
+      throw py::value_error(q_in.name + ": dataset " + *dataset + ": " + e.what());
+    }
+    if (material) qp = &*material;
+    else (substituting = std::make_unique<lookup::TableSet>(dir))->substitute(*dataset);
+  }
+  const cli::Quantity& q = *qp;
   const auto m = q.methods.find(method);
   if (m == q.methods.end()) {
     std::vector<std::string> names;
@@ -95,7 +113,7 @@ py::dict evaluate(const cli::Quantity& q, const std::string& method, const std::
                               lookup::format_number(in[i * np_ + j]) + " " + why + " " + p.domain);
     }
   cli::EvalContext ctx;
-  if (method == "table") ctx.tables = &tables_for(tables ? std::filesystem::path(*tables) : cli::default_tables_dir());
+  if (method == "table") ctx.tables = substituting ? substituting.get() : &tables_for(dir);
   std::string error;
   {
     py::gil_scoped_release release;
@@ -108,6 +126,9 @@ py::dict evaluate(const cli::Quantity& q, const std::string& method, const std::
     }
   }
   if (!error.empty()) throw py::value_error(error);
+  if (substituting && n > 0 && !substituting->substituted())
+    throw py::value_error(q.name + ": dataset " + *dataset + ": no such dataset in the table file(s) that " + q.name +
+                          " reads");
   py::dict result;
   for (std::size_t k = 0; k < no; ++k) {
     py::array_t<double> a(shape);
@@ -180,10 +201,11 @@ PYBIND11_MODULE(brdftab, m) {
     const cli::Quantity* qp = &q;
     m.def(
         q.name.c_str(),
-        [qp](const std::string& method, const std::optional<std::string>& tables, const py::kwargs& kwargs) {
-          return evaluate(*qp, method, tables, kwargs);
+        [qp](const std::string& method, const std::optional<std::string>& tables,
+             const std::optional<std::string>& dataset, const py::kwargs& kwargs) {
+          return evaluate(*qp, method, tables, dataset, kwargs);
         },
-        py::arg("method") = "exact", py::arg("tables") = py::none(), doc.c_str());
+        py::arg("method") = "exact", py::arg("tables") = py::none(), py::arg("dataset") = py::none(), doc.c_str());
   }
   py::class_<PyTable>(m, "Table", "an interpolated table: Table(path, dataset)(x0, x1, ...)")
       .def(py::init<const std::string&, const std::string&>(), py::arg("path"), py::arg("dataset"))
