@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -133,4 +134,31 @@ TEST_CASE("eval --dataset ls_albedo_material_NAME: A(mu) at the material's c (at
   REQUIRE(table.size() == std::size(mu_values));
   for (std::size_t i = 0; i < table.size(); ++i) CHECK(std::abs(table[i] - exact[i]) <= stated);
   CHECK(contains(eval("ls_albedo" + tables, "c,mu\n0.9,0.5\n", 2), "column 'c': value '0.9'"));
+}
+
+TEST_CASE("eval --dataset hfunc_<kind>_material_NAME: H(mu) at the material's c, h_ls's mode fixed by the name") {
+  const fs::path dir = generate("hfunc", R"("hfunc": {"precise": false, "compact": false, "functions": ["iso", "ls1"],
+      "compact_linear": [], "materials": [{"name": "milk", "c": 0.95}]})");
+  const std::string base = " --method table --tables '" + dir.string() + "' --dataset ";
+  const std::string mu_values[] = {"0", "0.01", "0.3", "1"};
+  std::string mu_only = "mu\n", iso_full = "c,mu\n", ls_full = "mode,c,mu\n";
+  for (const auto& mu : mu_values) mu_only += mu + "\n", iso_full += "0.95," + mu + "\n", ls_full += "1,0.95," + mu + "\n";
+  for (const auto& [q, ds, full] : {std::tuple<std::string, std::string, std::string>{"h_iso", "hfunc_iso_material_milk", iso_full},
+                                    {"h_ls", "hfunc_ls1_material_milk", ls_full}}) {
+    INFO(ds);
+    const auto table = column(eval(q + base + ds, mu_only), "H");
+    CHECK(column(eval(q + base + ds, full), "H") == table);
+    const auto exact = column(eval(q + " --method exact", full), "H");
+    const double stated = brdftab::lookup::load_table(dir / "hfunc.h5", ds).info.attribute_number("max_abs_error", NAN);
+    REQUIRE(stated > 0);
+    REQUIRE(stated < 1e-6);
+    REQUIRE(table.size() == std::size(mu_values));
+    for (std::size_t i = 0; i < table.size(); ++i) CHECK(std::abs(table[i] - exact[i]) <= stated);
+  }
+  // H^(1) and H_iso differ at c = 0.95: the name chose the table.
+  CHECK(column(eval("h_iso" + base + "hfunc_iso_material_milk", "mu\n0.5\n"), "H")[0] !=
+        column(eval("h_ls" + base + "hfunc_ls1_material_milk", "mu\n0.5\n"), "H")[0]);
+  const std::string e = eval("h_ls" + base + "hfunc_ls1_material_milk", "mode,mu\n2,0.5\n", 2);
+  CHECK(contains(e, "column 'mode': value '2'"));
+  CHECK(contains(e, "holds mode = 1 (its name)"));
 }

@@ -2,7 +2,8 @@
 // Chandrasekhar H-functions, isotropic and Lambertian-sphere pseudo-problems (d'Eon 3.1).
 //   exact: Fok integral (numerics/hfunction_fok.hpp), mu in [0, 1e20] or mu = inf.
 //   table: tables/hfunc.h5 (precise datasets hfunc_iso, hfunc_ls0, hfunc_ls1, hfunc_ls2), mu within the
-//          table's range (default [0, 1]).
+//          table's range (default [0, 1]); with --dataset hfunc_<kind>_material_NAME, that
+//          material's H(mu) slice (columns c and mode optional; quantity.hpp material_quantity).
 //   fit:   d'Eon Eq. 37 (mode 0) and Eq. 28-30 (mode 1, corrected, validate/ERRATA.md);
 //          no fit exists for mode 2 or the isotropic H-function.
 // `brdftab eval h_iso_moments` (c -> alpha0..alpha3) and `h_ls_moments` (mode, c -> alpha0..3):
@@ -14,6 +15,7 @@
 
 #include "cli/quantity.hpp"
 #include "lookup/hfunc_schema.hpp"
+#include "lookup/table_file.hpp"
 #include "lookup/table_set.hpp"
 #include "numerics/domain_check.hpp"
 #include "numerics/hfunction_fit.hpp"
@@ -41,6 +43,21 @@ double table_h(HKind kind, double c, double mu, const EvalContext& ctx) {
 
 HKind ls_kind(double mode) { return mode == 0 ? HKind::ls0 : mode == 1 ? HKind::ls1 : HKind::ls2; }
 
+// A per-material H(mu) table of `kind` (`--dataset hfunc_<kind>_material_NAME`, docs/scenes.md):
+// c fixed by the attribute ls_c; for h_ls also the mode, by the dataset name.
+MaterialTables material_tables(HKind kind, std::vector<std::pair<std::string, double>> pinned) {
+  const schema::DatasetSchema ds = schema::hfunc::material_dataset(kind);
+  return {std::string(schema::hfunc::kFile), std::string(ds.name), {{"c", "ls_c"}},
+          [ds](const lookup::LoadedTable& t) -> Method {
+            schema::check_table(t.table, ds);
+            const lookup::Table* table = &t.table;
+            return [table](std::span<const double> in, std::span<double> out, const EvalContext&) {
+              out[0] = table->eval1(in[in.size() - 1], lookup::OutOfDomain::error);
+            };
+          },
+          std::move(pinned)};
+}
+
 Parameter c_parameter() { return {"c", 0.0, 1.0, false, false, false, "[0, 1]"}; }
 // mu in (1e20, inf) passes this check and is refused by the exact method with its own message.
 Parameter mu_parameter() { return {"mu", 0.0, INFINITY, false, false, false, "[0, 1e20] or inf"}; }
@@ -65,6 +82,8 @@ std::vector<Quantity> quantities() {
         "Eq. 28-30: use h_ls with mode 0 or 1)");
   };
 
+  iso.material_tables = {material_tables(HKind::isotropic, {})};
+
   Quantity ls;
   ls.name = "h_ls";
   ls.description = "Lambertian-sphere pseudo-problem H-functions H^(mode)(c, mu), mode 0, 1, 2 (d'Eon section 3.1)";
@@ -84,6 +103,8 @@ std::vector<Quantity> quantities() {
     numerics::require_closed("mu", mu, 0.0, 1.0, "[0, 1] (the fits cover mu in [0, 1] only)");
     out[0] = mode == 0 ? numerics::deon_h0_fit(c, mu) : numerics::deon_h1_fit(c, mu);
   };
+  ls.material_tables = {material_tables(HKind::ls0, {{"mode", 0}}), material_tables(HKind::ls1, {{"mode", 1}}),
+                        material_tables(HKind::ls2, {{"mode", 2}})};
   Quantity iso_m;
   iso_m.name = "h_iso_moments";
   iso_m.description = "moments alpha_n = int_0^1 H_iso(c, mu) mu^n dmu, n = 0..3";

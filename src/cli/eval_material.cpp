@@ -25,22 +25,27 @@ std::optional<Quantity> material_quantity(const Quantity& q, const std::filesyst
   out.description = q.description + " (per-material table '" + dataset + "')";
   out.parameters = q.parameters;
   out.outputs = q.outputs;
-  for (const auto& [param, attribute] : m->fixed) {
+  // Pins parameter `param` to v: the column becomes optional and must hold exactly v.
+  auto pin = [&](const std::string& param, double v, const std::string& why) {
     Parameter* p = nullptr;
     for (auto& candidate : out.parameters)
       if (candidate.name == param) p = &candidate;
     if (!p) throw std::logic_error("quantity " + q.name + ": per-material parameter '" + param + "' is not a parameter");
+    const std::string value = lookup::format_number(v);
+    p->lo = p->hi = v;
+    p->lo_open = p->hi_open = p->integer = false;
+    p->fallback = v;
+    p->domain = "{" + value + "}: per-material table '" + dataset + "' holds " + param + " = " + value + " (" + why +
+                "); give that value or leave the column out";
+  };
+  for (const auto& [param, v] : m->pinned) pin(param, v, "its name");
+  for (const auto& [param, attribute] : m->fixed) {
     const auto it = loaded.info.attributes.find(attribute);
     const double* v = it == loaded.info.attributes.end() ? nullptr : std::get_if<double>(&it->second);
     if (!v)
       throw std::runtime_error("table '" + dataset + "' in '" + (tables_dir / m->file).string() + "': attribute '" +
                                attribute + "' (the material's " + param + ") is missing or not a number");
-    const std::string value = lookup::format_number(*v);
-    p->lo = p->hi = *v;
-    p->lo_open = p->hi_open = p->integer = false;
-    p->fallback = *v;
-    p->domain = "{" + value + "}: per-material table '" + dataset + "' holds " + param + " = " + value +
-                " (its attribute '" + attribute + "'); give that value or leave the column out";
+    pin(param, *v, "its attribute '" + attribute + "'");
   }
   Method bound = m->bind(loaded);
   out.methods["table"] = [tables, bound](std::span<const double> in, std::span<double> result, const EvalContext& ctx) {

@@ -47,6 +47,9 @@ struct MaterialTables {
   // The table method for rows of one material, built once from its loaded table. Rows
   // reach it with every parameter, the fixed ones equal to the material's values.
   std::function<Method(const lookup::LoadedTable&)> bind;
+  // Parameters the prefix itself fixes, with their values (e.g. h_ls: {"mode", 1} for
+  // "hfunc_ls1_material_"); same rule as `fixed`.
+  std::vector<std::pair<std::string, double>> pinned = {};
 };
 
 struct Quantity {
