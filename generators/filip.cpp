@@ -179,6 +179,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
         for (std::size_t j = 0; j < phis.size(); ++j)
           out[j] = std::log(numerics::filip_brdf(p, wi, numerics::filip_direction(o[2], phis[j])) + sc::kLogFloor);
       };
+      spec.cost_row_seconds = 0;  // declared for the cost model and `plan` (measured, default config)
+      spec.cost_value_seconds = 4e-7;
       BuiltTable t = build_table(spec, row, ctx);
       add_attributes(t, m, c);
       tables.push_back(std::move(t));
@@ -198,6 +200,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
           out[j] = std::log(numerics::filip_cos_integral(p, numerics::filip_direction(o[0], phis[j]), 0, to_max, 0,
                                                          2 * kPi, panel));
       };
+      spec.cost_row_seconds = 0;  // declared for the cost model and `plan` (measured, default config)
+      spec.cost_value_seconds = 7e-3;
       BuiltTable t = build_table(spec, row, ctx);
       add_attributes(t, m, c);
       tables.push_back(std::move(t));
@@ -222,6 +226,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
                              : (1 - std::pow(std::cos(thetas[j]), 2)) / (1 - std::pow(std::cos(to_max), 2));
         }
       };
+      spec.cost_row_seconds = 0;  // declared for the cost model and `plan` (measured, default config)
+      spec.cost_value_seconds = 4.4e-4;
       BuiltTable t = build_table(spec, row, ctx);
       add_attributes(t, m, c);
       tables.push_back(std::move(t));
@@ -244,6 +250,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
         const double total = cum.back();
         for (std::size_t j = 0; j < phis.size(); ++j) out[j] = total > 0 ? cum[j] / total : phis[j] / (2 * kPi);
       };
+      spec.cost_row_seconds = 0;  // declared for the cost model and `plan` (measured, default config)
+      spec.cost_value_seconds = 1e-5;
       BuiltTable t = build_table(spec, row, ctx);
       add_attributes(t, m, c);
       tables.push_back(std::move(t));
