@@ -14,8 +14,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <regex>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -73,21 +71,9 @@ Config read_config(const nlohmann::json& entry) {
   EntryReader r(entry, "tables.filip");
   Config c;
   if (const nlohmann::json* list = r.raw("materials")) {
-    if (!list->is_array() || list->empty())
-      throw ManifestError(r.key_path("materials") + ": expected a non-empty list of {\"name\", \"parameters\"}");
-    c.materials.clear();
-    std::set<std::string> names;
-    const std::regex name_re("[A-Za-z0-9_.-]{1,64}");
-    for (std::size_t i = 0; i < list->size(); ++i) {
-      const std::string ipath = r.key_path("materials") + "[" + std::to_string(i) + "]";
-      if (!(*list)[i].is_object()) throw ManifestError(ipath + ": expected an object {\"name\", \"parameters\"}");
-      EntryReader m((*list)[i], ipath);
+    const auto read_one = [](EntryReader& m, const std::string& ipath, const std::string& name) {
       Material mat;
-      const nlohmann::json* name = m.raw("name");
-      if (!name || !name->is_string() || !std::regex_match(name->get<std::string>(), name_re))
-        throw ManifestError(ipath + ".name: expected a string of 1-64 characters [A-Za-z0-9_.-]");
-      mat.name = name->get<std::string>();
-      if (!names.insert(mat.name).second) throw ManifestError(ipath + ".name: duplicate material '" + mat.name + "'");
+      mat.name = name;
       const nlohmann::json* params = m.raw("parameters");
       if (!params || !params->is_object())
         throw ManifestError(ipath + ".parameters: expected an object with every parameter of the model");
@@ -100,15 +86,16 @@ Config read_config(const nlohmann::json& entry) {
           throw ManifestError(ipath + ".parameters." + info[k].name + ": required, in " + info[k].domain);
       }
       pr.finish();
-      m.finish();
       mat.params = numerics::filip_from_vector(v.data());
       try {
         numerics::check_filip_params(mat.params);
       } catch (const std::domain_error& e) {
         throw ManifestError(ipath + ".parameters: " + e.what());
       }
-      c.materials.push_back(mat);
-    }
+      return mat;
+    };
+    c.materials = read_material_list(*list, r.key_path("materials"),
+                                     "{\"name\", \"parameters\"}", read_one);
   }
   c.theta_i_max_deg = r.number("theta_i_max_deg", c.theta_i_max_deg, 1.0, 89.0);
   c.theta_o_max_deg = r.number("theta_o_max_deg", c.theta_o_max_deg, 1.0, 89.0);
@@ -192,6 +179,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
         for (std::size_t j = 0; j < phis.size(); ++j)
           out[j] = std::log(numerics::filip_brdf(p, wi, numerics::filip_direction(o[2], phis[j])) + sc::kLogFloor);
       };
+      spec.cost_row_seconds = 0;  // declared for the cost model and `plan` (measured, default config)
+      spec.cost_value_seconds = 4e-7;
       BuiltTable t = build_table(spec, row, ctx);
       add_attributes(t, m, c);
       tables.push_back(std::move(t));
@@ -211,6 +200,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
           out[j] = std::log(numerics::filip_cos_integral(p, numerics::filip_direction(o[0], phis[j]), 0, to_max, 0,
                                                          2 * kPi, panel));
       };
+      spec.cost_row_seconds = 0;  // declared for the cost model and `plan` (measured, default config)
+      spec.cost_value_seconds = 7e-3;
       BuiltTable t = build_table(spec, row, ctx);
       add_attributes(t, m, c);
       tables.push_back(std::move(t));
@@ -235,6 +226,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
                              : (1 - std::pow(std::cos(thetas[j]), 2)) / (1 - std::pow(std::cos(to_max), 2));
         }
       };
+      spec.cost_row_seconds = 0;  // declared for the cost model and `plan` (measured, default config)
+      spec.cost_value_seconds = 4.4e-4;
       BuiltTable t = build_table(spec, row, ctx);
       add_attributes(t, m, c);
       tables.push_back(std::move(t));
@@ -257,6 +250,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
         const double total = cum.back();
         for (std::size_t j = 0; j < phis.size(); ++j) out[j] = total > 0 ? cum[j] / total : phis[j] / (2 * kPi);
       };
+      spec.cost_row_seconds = 0;  // declared for the cost model and `plan` (measured, default config)
+      spec.cost_value_seconds = 1e-5;
       BuiltTable t = build_table(spec, row, ctx);
       add_attributes(t, m, c);
       tables.push_back(std::move(t));

@@ -43,4 +43,8 @@ Config narrowed(Config c);
 std::string parameters_text(const numerics::FilipParams& p);
 numerics::FilipParams parse_parameters_text(const std::string& text);
 
+// Scene hook (generators/filip_scene.cpp): each material of model "filip" gets its f, albedo and
+// sampling CDF tables (per-material only: no generic grid).
+std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);
+
 }  // namespace brdftab::gen::filip

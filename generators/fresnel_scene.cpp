@@ -20,7 +20,10 @@ namespace brdftab::gen::fresnel {
 
 std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& all, const CostPolicy& policy) {
   const auto dielectrics = materials_with(all, "eta");
-  const auto conductors = materials_with(all, "n");  // "n" comes with "k" (scene_models.cpp)
+  // "n" comes with "k" (scene_models.cpp). An "hp" material's n, k are its own interface
+  // index, whose Fresnel terms the hp tables already hold: no F_avg for it.
+  auto conductors = materials_with(all, "n");
+  std::erase_if(conductors, [](const SceneMaterial* m) { return m->model == "hp"; });
   if (dielectrics.empty() && conductors.empty()) return std::nullopt;
   namespace sc = schema::fresnel;
   SceneConfig<Config> out;

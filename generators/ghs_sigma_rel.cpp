@@ -17,8 +17,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <regex>
-#include <set>
 #include <tuple>
 
 #include "generators/manifest.hpp"
@@ -68,27 +66,17 @@ Config read_config(const nlohmann::json& entry) {
   std::tie(c.s_lo, c.s_hi) = r.range("s_range", {0.0, 1.0}, 0.0, 1.0);
   c.w_scale = r.number("w_scale", c.w_scale, 0.01, 1000.0);
   if (const nlohmann::json* list = r.raw("materials")) {
-    if (!list->is_array() || list->empty())
-      throw ManifestError(r.key_path("materials") + ": expected a non-empty list of {\"name\", \"B\", \"c\"}");
-    std::set<std::string> names;
-    const std::regex name_re("[A-Za-z0-9_.-]{1,64}");
-    for (std::size_t i = 0; i < list->size(); ++i) {
-      const std::string ipath = r.key_path("materials") + "[" + std::to_string(i) + "]";
-      if (!(*list)[i].is_object()) throw ManifestError(ipath + ": expected an object {\"name\", \"B\", \"c\"}");
-      EntryReader m((*list)[i], ipath);
-      Material mat;
-      const nlohmann::json* name = m.raw("name");
-      if (!name || !name->is_string() || !std::regex_match(name->get<std::string>(), name_re))
-        throw ManifestError(ipath + ".name: expected a string of 1-64 characters [A-Za-z0-9_.-]");
-      mat.name = name->get<std::string>();
-      if (!names.insert(mat.name).second) throw ManifestError(ipath + ".name: duplicate material '" + mat.name + "'");
-      mat.B = m.number("B", NAN, kBDomainLo, kBDomainHi);
-      mat.c = m.number("c", NAN, 1.0, numerics::kGhsCMax);
-      if (!(mat.B >= kBDomainLo)) throw ManifestError(ipath + ".B: required, in [1e-8, 1e8]");
-      if (!(mat.c > 1.0)) throw ManifestError(ipath + ".c: required, in (1, 100]");
-      m.finish();
-      c.materials.push_back(mat);
-    }
+    c.materials = read_material_list(
+        *list, r.key_path("materials"), "{\"name\", \"B\", \"c\"}",
+        [](EntryReader& m, const std::string& ipath, const std::string& name) {
+          Material mat;
+          mat.name = name;
+          mat.B = m.number("B", NAN, kBDomainLo, kBDomainHi);
+          mat.c = m.number("c", NAN, 1.0, numerics::kGhsCMax);
+          if (!(mat.B >= kBDomainLo)) throw ManifestError(ipath + ".B: required, in [1e-8, 1e8]");
+          if (!(mat.c > 1.0)) throw ManifestError(ipath + ".c: required, in (1, 100]");
+          return mat;
+        });
     c.material_w_points = static_cast<int>(r.integer("w_points", c.material_w_points, 4, 100000));
     c.material_storage = read_storage(r, "float64");
   } else {

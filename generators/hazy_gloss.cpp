@@ -8,8 +8,6 @@
 #include <cmath>
 #include <map>
 #include <mutex>
-#include <regex>
-#include <set>
 #include <tuple>
 
 #include "generators/manifest.hpp"
@@ -31,22 +29,9 @@ Config read_config(const nlohmann::json& entry) {
   EntryReader r(entry, "tables.hazy_gloss");
   Config c;
   if (const nlohmann::json* list = r.raw("materials")) {
-    if (!list->is_array() || list->empty())
-      throw ManifestError(r.key_path("materials") +
-                          ": expected a non-empty list of {\"name\", \"r_c\", \"g\", \"alpha_n\", \"beta_h\", \"lambda_h\"}");
-    c.materials.clear();
-    std::set<std::string> names;
-    const std::regex name_re("[A-Za-z0-9_.-]{1,64}");
-    for (std::size_t i = 0; i < list->size(); ++i) {
-      const std::string ipath = r.key_path("materials") + "[" + std::to_string(i) + "]";
-      if (!(*list)[i].is_object()) throw ManifestError(ipath + ": expected an object");
-      EntryReader m((*list)[i], ipath);
+    const auto read_one = [](EntryReader& m, const std::string& ipath, const std::string& name) {
       Material mat;
-      const nlohmann::json* name = m.raw("name");
-      if (!name || !name->is_string() || !std::regex_match(name->get<std::string>(), name_re))
-        throw ManifestError(ipath + ".name: expected a string of 1-64 characters [A-Za-z0-9_.-]");
-      mat.name = name->get<std::string>();
-      if (!names.insert(mat.name).second) throw ManifestError(ipath + ".name: duplicate material '" + mat.name + "'");
+      mat.name = name;
       mat.r_c = m.number("r_c", mat.r_c, 0.0, std::nextafter(1.0, 0.0));
       mat.g = m.number("g", mat.g, 0.0, 1.0);
       mat.alpha_n = m.number("alpha_n", mat.alpha_n, 1e-3, 1.0);
@@ -55,9 +40,10 @@ Config read_config(const nlohmann::json& entry) {
       if (mat.alpha_n * (1.0 + mat.lambda_h) > 10.0)
         throw ManifestError(ipath + ": alpha_w = alpha_n (1 + lambda_h) = " + lookup::format_number(mat.alpha_n * (1 + mat.lambda_h)) +
                             " is outside [1e-3, 10]");
-      m.finish();
-      c.materials.push_back(mat);
-    }
+      return mat;
+    };
+    c.materials = read_material_list(*list, r.key_path("materials"),
+                                     "{\"name\", \"r_c\", \"g\", \"alpha_n\", \"beta_h\", \"lambda_h\"}", read_one);
   }
   std::tie(c.mu_lo, c.mu_hi) = r.range("mu_range", {c.mu_lo, c.mu_hi}, 1e-6, 1.0);
   c.mu_step = r.number("mu_step", c.mu_step, 1e-4, 0.5);
@@ -127,6 +113,10 @@ BuiltTable build_one(const Material& m, const Config& c, int ndf, bool compound,
   spec.generator = "hazy_gloss";
   spec.error_rows = 1;
   spec.error_per_row = c.error_points;
+  // Declared single-core seconds per value for the cost model and `plan` (scene hook),
+  // measured: one albedo pass ~9e-3 s gives both maskings (the compound table reads the memo).
+  spec.cost_row_seconds = 0;
+  spec.cost_value_seconds = compound ? 1e-4 : 9e-3;
   const RowFunction row = pointwise_parallel_row([&memo, name = m.name, ndf, comp, compound](double mu) {
     const numerics::HazyGlossAlbedo a = memo.get(name, ndf, comp, mu);
     return compound ? a.compound : a.large_patch;

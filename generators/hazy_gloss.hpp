@@ -40,4 +40,8 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx);
 Config test_config();
 Config narrowed(Config c);
 
+// Scene hook (generators/hazy_gloss_scene.cpp): each material of model "hazy_gloss" gets its four
+// albedo tables (per-material only: no generic grid).
+std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);
+
 }  // namespace brdftab::gen::hazy_gloss

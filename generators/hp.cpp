@@ -9,8 +9,6 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
-#include <regex>
-#include <set>
 
 #include "generators/manifest.hpp"
 #include "lookup/number_format.hpp"
@@ -53,21 +51,9 @@ Config read_config(const nlohmann::json& entry) {
   EntryReader r(entry, "tables.hp");
   Config c;
   if (const nlohmann::json* list = r.raw("materials")) {
-    if (!list->is_array() || list->empty())
-      throw ManifestError(r.key_path("materials") + ": expected a non-empty list of material objects");
-    c.materials.clear();
-    std::set<std::string> names;
-    const std::regex name_re("[A-Za-z0-9_.-]{1,64}");
-    for (std::size_t i = 0; i < list->size(); ++i) {
-      const std::string ipath = r.key_path("materials") + "[" + std::to_string(i) + "]";
-      if (!(*list)[i].is_object()) throw ManifestError(ipath + ": expected an object");
-      EntryReader m((*list)[i], ipath);
+    const auto read_one = [](EntryReader& m, const std::string& ipath, const std::string& name) {
       Material mat;
-      const nlohmann::json* name = m.raw("name");
-      if (!name || !name->is_string() || !std::regex_match(name->get<std::string>(), name_re))
-        throw ManifestError(ipath + ".name: expected a string of 1-64 characters [A-Za-z0-9_.-]");
-      mat.name = name->get<std::string>();
-      if (!names.insert(mat.name).second) throw ManifestError(ipath + ".name: duplicate material '" + mat.name + "'");
+      mat.name = name;
       double v[numerics::kHpParameterCount];
       for (int j = 0; j < numerics::kHpParameterCount; ++j) {
         const auto& d = numerics::kHpParameterDomains[j];
@@ -77,14 +63,15 @@ Config read_config(const nlohmann::json& entry) {
           throw ManifestError(ipath + "." + d.name + ": required, in " + d.domain + " (" + d.unit + ")");
       }
       v[8] = static_cast<double>(layer_of(m.choice("layer", "none", {"none", "subsurface", "plastic"})));
-      m.finish();
       try {
         mat.m = numerics::hp_material_from_values(v);
       } catch (const std::domain_error& e) {
         throw ManifestError(ipath + ": " + e.what());
       }
-      c.materials.push_back(mat);
-    }
+      return mat;
+    };
+    c.materials = read_material_list(*list, r.key_path("materials"),
+                                     "material objects {\"name\", \"lambda_um\", ..., \"layer\", \"albedo\"}", read_one);
   }
   c.mu_points = static_cast<int>(r.integer("mu_points", c.mu_points, 4, 100000));
   c.tol = r.number("tol", c.tol, 1e-12, 1e-2);
@@ -144,6 +131,11 @@ std::vector<BuiltTable> build_material(const Material& mm, const Config& c, cons
     spec.generator = "hp";
     spec.error_rows = 1;
     spec.error_per_row = c.error_points;
+    // Declared single-core seconds per value for the cost model and `plan` (scene hook): the
+    // default material set and tolerance, measured (the diffraction integral dominates).
+    constexpr double kValueSeconds[3] = {3e-3, 2.5e-2, 3e-4};
+    spec.cost_row_seconds = 0;
+    spec.cost_value_seconds = kValueSeconds[part];
     const RowFunction row = pointwise_parallel_row([f, tol, part](double mu) {
       const numerics::HpIncident in = f->incident(std::acos(std::clamp(mu, 1e-9, 1.0)));  // limit at 0: schema
       if (part == 0) return numerics::hp_albedo_reflection(*f, in, tol);

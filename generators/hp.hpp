@@ -46,4 +46,8 @@ Config narrowed(Config c);
 // The three tables of one material (reflection, diffraction, layer).
 std::vector<BuiltTable> build_material(const Material& m, const Config& c, const GenerateContext& ctx);
 
+// Scene hook (generators/hp_scene.cpp): each material of model "hp" gets its three lobe-albedo
+// tables (per-material only: no generic grid).
+std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);
+
 }  // namespace brdftab::gen::hp

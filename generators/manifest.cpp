@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -114,6 +115,26 @@ nlohmann::json parse_manifest_text(const std::string& text) {
 EntryReader::EntryReader(const nlohmann::json& entry, std::string path) : entry_(entry), path_(std::move(path)) {
   if (!entry_.is_object())
     throw ManifestError(path_ + ": expected an object, got " + type_name(entry_));
+}
+
+void for_each_named_material(
+    const nlohmann::json& list, const std::string& where, const std::string& shape,
+    const std::function<void(EntryReader& reader, const std::string& path, const std::string& name)>& read_one) {
+  if (!list.is_array() || list.empty()) throw ManifestError(where + ": expected a non-empty list of " + shape);
+  static const std::regex name_re("[A-Za-z0-9_.-]{1,64}");
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string ipath = where + "[" + std::to_string(i) + "]";
+    if (!list[i].is_object()) throw ManifestError(ipath + ": expected an object " + shape + ", got " + type_name(list[i]));
+    EntryReader r(list[i], ipath);
+    const nlohmann::json* name = r.raw("name");
+    if (!name || !name->is_string() || !std::regex_match(name->get<std::string>(), name_re))
+      throw ManifestError(ipath + ".name: expected a string of 1-64 characters [A-Za-z0-9_.-]");
+    const std::string n = name->get<std::string>();
+    if (!names.insert(n).second) throw ManifestError(ipath + ".name: duplicate material '" + n + "'");
+    read_one(r, ipath, n);
+    r.finish();
+  }
 }
 
 const nlohmann::json* EntryReader::raw(const std::string& key) {

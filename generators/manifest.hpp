@@ -13,6 +13,7 @@
 // rejected; numbers outside the double range (1e400) are manifest errors naming the key;
 // no error message quotes more than a short, escaped excerpt of the offending value.
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -79,5 +80,27 @@ class EntryReader {
   std::string path_;
   std::vector<std::string> read_;
 };
+
+// A family entry's list of named materials, e.g. "materials": [{"name": "gold", "p": 1.3}, ...]:
+// checks once that `list` is a non-empty array of objects, and that each "name" is a string
+// of 1-64 characters [A-Za-z0-9_.-] (it becomes a dataset-name suffix) not used before, then
+// calls read_one(reader, path, name) for each element (reader over the element, "name"
+// already read; path e.g. "tables.hp.materials[2]") and finish()es the reader after it.
+// `shape` describes an element in the errors ("expected a non-empty list of " + shape).
+void for_each_named_material(
+    const nlohmann::json& list, const std::string& where, const std::string& shape,
+    const std::function<void(EntryReader& reader, const std::string& path, const std::string& name)>& read_one);
+
+// The same, collecting what read_one returns.
+template <class ReadOne>
+auto read_material_list(const nlohmann::json& list, const std::string& where, const std::string& shape,
+                        ReadOne read_one) {
+  using Material = std::invoke_result_t<ReadOne, EntryReader&, const std::string&, const std::string&>;
+  std::vector<Material> out;
+  for_each_named_material(list, where, shape, [&](EntryReader& r, const std::string& path, const std::string& name) {
+    out.push_back(read_one(r, path, name));
+  });
+  return out;
+}
 
 }  // namespace brdftab::gen

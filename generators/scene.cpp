@@ -149,6 +149,12 @@ FormChoice choose_form(const std::string& family, const CostPolicy& policy, cons
   return c;
 }
 
+FormChoice slices_only_choice(const std::string& family, const CostPolicy& policy, const FormEstimate& slices) {
+  FormEstimate grid;
+  grid.infeasible = "the family has per-material tables only (no generic grid over the material parameters)";
+  return choose_form(family, policy, slices, grid);
+}
+
 std::vector<const SceneMaterial*> materials_of(const std::vector<SceneMaterial>& materials,
                                                std::initializer_list<const char*> models) {
   std::vector<const SceneMaterial*> out;

@@ -82,6 +82,10 @@ struct FormChoice {
 FormChoice choose_form(const std::string& family, const CostPolicy& policy, const FormEstimate& slices,
                        const FormEstimate& grid);
 
+// The choice of a family that has per-material tables only (hazy_gloss, hp, filip): slices,
+// the grid infeasible ("no generic grid"), so an override "grid" is a SceneError naming it.
+FormChoice slices_only_choice(const std::string& family, const CostPolicy& policy, const FormEstimate& slices);
+
 // What one material takes from one family: tables (role -> file/dataset) and exact scalars.
 struct TableUse {
   std::string role, file, dataset;

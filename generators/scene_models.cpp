@@ -41,6 +41,9 @@ const std::vector<SceneModel>& scene_models() {
        {{"alpha", 0, 1e3, true, false, true, "Beckmann roughness"}, kEta, kN, kK},
        {},
        {{"n", "k"}}},
+      hazy_gloss_scene_model(),
+      hp_scene_model(),
+      filip_scene_model(),
   };
   return models;
 }
@@ -98,8 +101,11 @@ void read_material_params(const SceneModel& model, const nlohmann::json& obj, co
     if (given != 0 && given != static_cast<int>(group.size()))
       throw SceneError(where + ": model '" + model.name + "' needs " + names + " together (a conductor index n + i k)");
   }
-  if (m.has("n") && m.has("k") && !(m.at("n") + m.at("k") > 0))
+  if (model.finish) {
+    model.finish(m, where);
+  } else if (m.has("n") && m.has("k") && !(m.at("n") + m.at("k") > 0)) {
     throw SceneError(where + ": n = 0 and k = 0 is not a conductor (need n + k > 0)");
+  }
 }
 
 }  // namespace brdftab::gen

@@ -24,9 +24,17 @@ struct SceneModel {
   // Groups where exactly one key must be given ("c" or "k_d"), and groups where all keys or
   // none must be given (a conductor's "n" and "k").
   std::vector<std::vector<const char*>> one_of, all_or_none;
+  // Joint constraints and parameters with defaults (run after the keys are read and each is
+  // in its domain): fills defaults into m.params, throws SceneError naming `where`, the key,
+  // the value and the domain. nullptr: none.
+  void (*finish)(SceneMaterial& m, const std::string& where) = nullptr;
 };
 
 const std::vector<SceneModel>& scene_models();
+// The three model-specific parts (scene_models.cpp): hazy gloss, Holzschuch-Pacanowski, Filip.
+SceneModel hazy_gloss_scene_model();
+SceneModel hp_scene_model();
+SceneModel filip_scene_model();
 const SceneModel* find_scene_model(const std::string& name);
 // "[lo, hi]" / "(lo, hi]" ...
 std::string param_domain(const SceneParam& p);

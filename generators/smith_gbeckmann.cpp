@@ -13,8 +13,6 @@
 #include "generators/smith_gbeckmann.hpp"
 
 #include <cmath>
-#include <regex>
-#include <set>
 #include <tuple>
 
 #include "generators/manifest.hpp"
@@ -30,28 +28,16 @@ namespace {
 
 // "materials": [{"name": ..., "p": ...}, ...]
 std::vector<Material> read_materials(const nlohmann::json& list, const std::string& where) {
-  if (!list.is_array() || list.empty())
-    throw ManifestError(where + ": expected a non-empty list of {\"name\", \"p\"}");
-  static const std::regex name_re("[A-Za-z0-9_.-]{1,64}");
-  std::vector<Material> out;
-  std::set<std::string> names;
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::string ipath = where + "[" + std::to_string(i) + "]";
-    EntryReader m(list[i], ipath);
+  return read_material_list(list, where, "{\"name\", \"p\"}", [](EntryReader& m, const std::string& ipath,
+                                                                   const std::string& name) {
     Material mat;
-    const nlohmann::json* name = m.raw("name");
-    if (!name || !name->is_string() || !std::regex_match(name->get<std::string>(), name_re))
-      throw ManifestError(ipath + ".name: expected a string of 1-64 characters [A-Za-z0-9_.-]");
-    mat.name = name->get<std::string>();
-    if (!names.insert(mat.name).second) throw ManifestError(ipath + ".name: duplicate material '" + mat.name + "'");
+    mat.name = name;
     mat.p = m.number("p", NAN, numerics::kSmithGBeckmannPMin, numerics::kSmithGBeckmannPMax);
     if (!(mat.p >= numerics::kSmithGBeckmannPMin))
       throw ManifestError(ipath + ".p: required, in [" + lookup::format_number(numerics::kSmithGBeckmannPMin) + ", " +
                           lookup::format_number(numerics::kSmithGBeckmannPMax) + "]");
-    m.finish();
-    out.push_back(mat);
-  }
-  return out;
+    return mat;
+  });
 }
 
 }  // namespace

@@ -81,8 +81,7 @@ void register_benchmarks(const BenchContext& ctx) {
   // Table lookups: the committed tables if present (--tables DIR), else nothing.
   const auto file = ctx.tables_dir / schema::smith_gbeckmann::kFile;
   if (std::filesystem::exists(file)) {
-    for (const auto& ds : schema::smith_gbeckmann::kDatasets) {
-      if (ds.per_material) continue;  // scene tables (docs/scenes.md): not in the default file
+    for (const auto& ds : schema::fixed_name_datasets(schema::smith_gbeckmann::kDatasets)) {
       const std::string dataset(ds.name);
       auto loaded = std::make_shared<lookup::LoadedTable>(lookup::load_table(file, dataset));
       auto table = std::make_shared<lookup::SmithGBeckmannTable>(loaded->table);

@@ -188,8 +188,7 @@ void tables_section(ReportContext& ctx) {
   auto& md = *ctx.markdown;
   const auto samples = random_samples(4000, 2024);
   // Committed tables: error maps on an off-grid map (cell centres) and random points.
-  for (const auto& ds : schema::smith_gbeckmann::kDatasets) {
-    if (ds.per_material) continue;  // scene tables (docs/scenes.md): not in the default file
+  for (const auto& ds : schema::fixed_name_datasets(schema::smith_gbeckmann::kDatasets)) {
     const std::string dataset(ds.name);
     const lookup::Table* t = nullptr;
     try {

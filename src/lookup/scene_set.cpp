@@ -4,9 +4,12 @@
 #include <regex>
 #include <sstream>
 
+#include "lookup/filip_schema.hpp"
 #include "lookup/fresnel.hpp"
 #include "lookup/ghs_sigma_rel.hpp"
+#include "lookup/hazy_gloss_schema.hpp"
 #include "lookup/hfunc_schema.hpp"
+#include "lookup/hp_schema.hpp"
 #include "lookup/ls.hpp"
 #include "lookup/smith_gbeckmann.hpp"
 
@@ -115,10 +118,31 @@ struct SceneMaterialHandle::Impl {
   std::optional<FresnelDrTable> dr;
   std::optional<FresnelAvgConductorTable> avg;
   double c = NAN, kd_value = NAN;
+  std::map<std::string, const LoadedTable*> composite;  // role -> per-material table
 };
 
 namespace {
 std::string where(const SceneSet::Entry& e, const std::string& role) { return "scene material '" + e.name + "', role '" + role + "'"; }
+
+// The roles served by a per-material table of a composite-model family, and its schema.
+const schema::DatasetSchema* composite_role_schema(const std::string& role) {
+  namespace hz = schema::hazy_gloss;
+  namespace fp = schema::filip;
+  static const std::map<std::string, const schema::DatasetSchema*> roles = {
+      {"hazy_albedo_ggx_patch", &hz::kGgxPatch},
+      {"hazy_albedo_ggx_compound", &hz::kGgxCompound},
+      {"hazy_albedo_beckmann_patch", &hz::kBeckmannPatch},
+      {"hazy_albedo_beckmann_compound", &hz::kBeckmannCompound},
+      {"hp_albedo_reflection", &schema::hp::kReflection},
+      {"hp_albedo_diffraction", &schema::hp::kDiffraction},
+      {"hp_albedo_layer", &schema::hp::kLayer},
+      {"filip_brdf", &fp::kBrdf},
+      {"filip_albedo", &fp::kAlbedo},
+      {"filip_marginal_cdf", &fp::kMarginal},
+      {"filip_conditional_cdf", &fp::kConditional}};
+  const auto it = roles.find(role);
+  return it == roles.end() ? nullptr : it->second;
+}
 }  // namespace
 
 SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tables) : e_(e), impl_(std::make_unique<Impl>()) {
@@ -160,6 +184,10 @@ SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tab
         m.dr.emplace(t.table);
       } else if (role == "F_avg") {
         m.avg.emplace(t.table);
+      } else if (const schema::DatasetSchema* d = composite_role_schema(role)) {
+        if (!d->matches(ds)) throw TableFileError("role '" + role + "': dataset '" + ds + "' is not a " + std::string(d->name) + "... table");
+        schema::check_table(t.table, t.info.attribute_string("quantity"), *d);
+        m.composite[role] = &t;
       } else {
         throw TableFileError("unknown role (this library is older than the scene index?)");
       }
@@ -243,6 +271,12 @@ double SceneMaterialHandle::fresnel_avg() const {
   if (auto it = e_.scalars.find("F_avg"); it != e_.scalars.end()) return it->second;
   if (impl_->avg) return lookup::fresnel_avg_conductor(*impl_->avg, param("n"), param("k"));
   missing(e_, "F_avg");
+}
+
+const Table& SceneMaterialHandle::table(const std::string& role) const {
+  const auto it = impl_->composite.find(role);
+  if (it == impl_->composite.end()) missing(e_, role);
+  return it->second->table;
 }
 
 }  // namespace brdftab::lookup

@@ -77,6 +77,12 @@ class SceneMaterialHandle {
   // Fresnel averages: exact scalars from the index, or the fresnel tables (form grid).
   double fresnel_dr() const;
   double fresnel_avg() const;
+  // The per-material tables of the composite models by role, checked against their family
+  // schema when loaded: hazy_gloss "hazy_albedo_{ggx,beckmann}_{patch,compound}" (A(mu));
+  // hp "hp_albedo_reflection", "hp_albedo_diffraction", "hp_albedo_layer" (A(theta_i));
+  // filip "filip_brdf", "filip_albedo", "filip_marginal_cdf", "filip_conditional_cdf".
+  // Evaluate them with the family's lookup helpers (lookup/hazy_gloss.hpp, hp.hpp, filip.hpp).
+  const Table& table(const std::string& role) const;
 
  private:
   struct Impl;

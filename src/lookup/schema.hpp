@@ -8,6 +8,7 @@
 // transforms and units) and the derived-axis maps (functions that turn physical parameters
 // into axis coordinates, e.g. b = a M1(p)). Standard library only.
 #include <array>
+#include <ranges>
 #include <string>
 #include <string_view>
 
@@ -39,6 +40,15 @@ struct DatasetSchema {
     return per_material ? dataset.size() > name.size() && dataset.substr(0, name.size()) == name : dataset == name;
   }
 };
+
+// The datasets of a family schema with a fixed name, in schema order: those a file generated
+// from a manifest entry without "materials" (e.g. the default file) may hold. The
+// per-material ones (prefix + material name) exist only for the materials of a manifest or
+// scene (docs/scenes.md).
+template <class Datasets>
+auto fixed_name_datasets(const Datasets& datasets) {
+  return datasets | std::views::filter([](const DatasetSchema& d) { return !d.per_material; });
+}
 
 // Throws std::invalid_argument naming the table and the first mismatch (rank, an axis'
 // name, transform or units) between `table` and `schema`.

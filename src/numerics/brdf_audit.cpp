@@ -90,7 +90,8 @@ AuditCheck check_sign_and_finite(const AuditableModel& m, const BoundBrdf& f, co
   return c;
 }
 
-AuditCheck check_reciprocity(const AuditableModel& m, const BoundBrdf& f, const AuditOptions& o) {
+AuditCheck check_reciprocity(const AuditableModel& m, std::span<const double> params, const BoundBrdf& f,
+                             const AuditOptions& o) {
   std::mt19937_64 rng(o.seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const int pairs = m.cost == AuditCost::slow ? std::max(1, o.reciprocity_pairs / 20) : o.reciprocity_pairs;
@@ -117,13 +118,15 @@ AuditCheck check_reciprocity(const AuditableModel& m, const BoundBrdf& f, const 
   c.tolerance = num(o.reciprocity_tolerance);
   c.value = worst;
   if (worst > o.reciprocity_tolerance) {
-    c.verdict = AuditVerdict::fail;
-    c.note = where;
+    const std::string because = m.nonreciprocal_because ? m.nonreciprocal_because(params) : std::string();
+    c.verdict = because.empty() ? AuditVerdict::fail : AuditVerdict::finding;
+    c.note = because.empty() ? where : because + "; worst " + where;
   }
   return c;
 }
 
-AuditCheck check_albedo(const AuditableModel& m, const BoundBrdf& f, const AuditOptions& o) {
+AuditCheck check_albedo(const AuditableModel& m, std::span<const double> params, const BoundBrdf& f,
+                        const AuditOptions& o) {
   const bool slow = m.cost == AuditCost::slow;
   std::vector<double> thetas_deg = {0, 30, 60, 75, 85, 89};
   if (slow) thetas_deg = {0, 60, 85};
@@ -134,7 +137,9 @@ AuditCheck check_albedo(const AuditableModel& m, const BoundBrdf& f, const Audit
     for (double p : phis_deg) {
       double a;
       try {
-        a = audit_directional_albedo(f, dir(t * kDeg, p * kDeg), slow ? 6 : 16, slow ? 4 : 16);
+        const AuditVec wi = dir(t * kDeg, p * kDeg);
+        a = audit_directional_albedo(f, wi, slow ? 6 : 16, slow ? 4 : 16);
+        if (m.delta_albedo) a += m.delta_albedo(params, wi);
       } catch (const std::exception&) {
         a = INFINITY;
       }
@@ -145,7 +150,7 @@ AuditCheck check_albedo(const AuditableModel& m, const BoundBrdf& f, const Audit
     }
   AuditCheck c;
   c.name = "directional albedo <= 1";
-  c.measured = "max " + num(worst) + " at " + where;
+  c.measured = "max " + num(worst) + " at " + where + (m.delta_albedo ? " (with the mirror delta)" : "");
   c.tolerance = "1 + " + num(o.albedo_tolerance);
   c.value = worst;
   if (!(worst <= 1 + o.albedo_tolerance)) {
@@ -274,8 +279,8 @@ AuditReport run_audit(const AuditableModel& model, std::span<const double> param
   r.model = model.name;
   r.params.assign(params.begin(), params.end());
   r.checks.push_back(check_sign_and_finite(model, f, options));
-  r.checks.push_back(check_reciprocity(model, f, options));
-  r.checks.push_back(check_albedo(model, f, options));
+  r.checks.push_back(check_reciprocity(model, params, f, options));
+  r.checks.push_back(check_albedo(model, params, f, options));
   r.checks.push_back(check_continuity(model, params, options));
   return r;
 }

@@ -11,8 +11,9 @@
 //   continuity at parameter edges f at each finite end of each parameter's domain against f
 //                                1e-10 max(1, |end|) inside, over a set of directions, relative to
 //                                the largest |f| there (a jump stays, a sqrt-type edge is 1e-5).
-// A model may declare that the paper's model does not conserve energy or is unbounded at grazing
-// angles: a violation of that check is then reported as a finding, not a failure.
+// A model may declare that the paper's model does not conserve energy, is unbounded at grazing
+// angles or (at some parameters) is not reciprocal: a violation of that check is then reported
+// as a finding, not a failure.
 //
 // Registering a model: write `AuditableModel audit_model_K()` (one or more, in a
 // numerics/brdf_audit_K.cpp file) and add the line `X(K)` to numerics/brdf_audit_model_list.hpp.
@@ -51,6 +52,12 @@ struct AuditableModel {
   std::string energy_note;
   bool bounded_at_grazing = true;   // false: Inf/overflow at grazing angles is a finding
   std::string grazing_note;
+  // Why the paper's model is not reciprocal at these parameters (a reciprocity defect is then a
+  // finding), or "" where it should be (empty function: always reciprocal).
+  std::function<std::string(std::span<const double> params)> nonreciprocal_because;
+  // The reflectance of a mirror delta term that f does not contain, added to the directional
+  // albedo (Li & Torrance Eq. 3), or empty.
+  std::function<double(std::span<const double> params, const AuditVec& wi)> delta_albedo;
   AuditCost cost = AuditCost::cheap;
 };
 
