@@ -95,6 +95,36 @@ FormEstimate dry_estimate(const Config& c, std::vector<BuiltTable> (*build)(cons
   return e;
 }
 
+// The scene hook of a family that has per-material tables only (hazy_gloss, hp, filip): the
+// scene's materials of `model`, each turned into an entry of Config::materials by
+// to_material(const SceneMaterial&), always slices (slices_only_choice), each material served
+// by one table per role: dataset = role's schema name (the per-material prefix) + its name.
+struct PerMaterialRole {
+  const char* role;
+  const schema::DatasetSchema* dataset;
+};
+template <class Config, class ToMaterial>
+std::optional<SceneConfig<Config>> per_material_scene(
+    const char* family, const char* model, std::string_view file, std::initializer_list<PerMaterialRole> roles,
+    const std::vector<SceneMaterial>& all, const CostPolicy& policy,
+    std::vector<BuiltTable> (*build)(const Config&, const GenerateContext&), ToMaterial to_material) {
+  const auto mats = materials_of(all, {model});
+  if (mats.empty()) return std::nullopt;
+  Config c;
+  c.materials.clear();
+  for (const SceneMaterial* m : mats) c.materials.push_back(to_material(*m));
+  SceneConfig<Config> out;
+  out.choice = slices_only_choice(family, policy, dry_estimate(c, build));
+  out.config = c;
+  for (const SceneMaterial* m : mats) {
+    MaterialUse u{m->name, {}, {}};
+    for (const PerMaterialRole& r : roles)
+      u.tables.push_back({r.role, std::string(file), std::string(r.dataset->name) + m->name});
+    out.uses.push_back(std::move(u));
+  }
+  return out;
+}
+
 // The absence of a family's scene hook: unqualified from_scene(materials, policy) inside
 // namespace gen::K finds K::from_scene if the family declares one (a non-template, preferred),
 // else this template, whose return type says "no hook". Never called.

@@ -8,28 +8,18 @@
 namespace brdftab::gen::filip {
 
 std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& all, const CostPolicy& policy) {
-  const auto mats = materials_of(all, {"filip"});
-  if (mats.empty()) return std::nullopt;
-  Config c;
-  c.materials.clear();
-  for (const SceneMaterial* m : mats) {
-    double v[numerics::kFilipParamCount];
-    for (int i = 0; i < numerics::kFilipParamCount; ++i) v[i] = m->at(numerics::filip_param_info()[i].name);
-    c.materials.push_back({m->name, numerics::filip_from_vector(v)});  // checked by the scene model
-  }
-  SceneConfig<Config> out;
-  out.choice = slices_only_choice("filip", policy, dry_estimate(c, &build));
-  out.config = c;
   namespace sc = schema::filip;
-  const std::string file(sc::kFile);
-  for (const SceneMaterial* m : mats)
-    out.uses.push_back({m->name,
-                        {{"filip_brdf", file, std::string(sc::kBrdf.name) + m->name},
-                         {"filip_albedo", file, std::string(sc::kAlbedo.name) + m->name},
-                         {"filip_marginal_cdf", file, std::string(sc::kMarginal.name) + m->name},
-                         {"filip_conditional_cdf", file, std::string(sc::kConditional.name) + m->name}},
-                        {}});
-  return out;
+  return per_material_scene<Config>(
+      "filip", "filip", sc::kFile,
+      {{"filip_brdf", &sc::kBrdf},
+       {"filip_albedo", &sc::kAlbedo},
+       {"filip_marginal_cdf", &sc::kMarginal},
+       {"filip_conditional_cdf", &sc::kConditional}},
+      all, policy, &build, [](const SceneMaterial& m) {
+        double v[numerics::kFilipParamCount];
+        for (int i = 0; i < numerics::kFilipParamCount; ++i) v[i] = m.at(numerics::filip_param_info()[i].name);
+        return Material{m.name, numerics::filip_from_vector(v)};  // checked by the scene model
+      });
 }
 
 }  // namespace brdftab::gen::filip

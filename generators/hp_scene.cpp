@@ -8,27 +8,17 @@
 namespace brdftab::gen::hp {
 
 std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& all, const CostPolicy& policy) {
-  const auto mats = materials_of(all, {"hp"});
-  if (mats.empty()) return std::nullopt;
-  Config c;
-  c.materials.clear();
-  for (const SceneMaterial* m : mats) {
-    double v[numerics::kHpParameterCount];
-    for (int i = 0; i < numerics::kHpParameterCount; ++i) v[i] = m->at(numerics::kHpParameterDomains[i].name);
-    c.materials.push_back({m->name, numerics::hp_material_from_values(v)});  // checked by the scene model
-  }
-  SceneConfig<Config> out;
-  out.choice = slices_only_choice("hp", policy, dry_estimate(c, &build));
-  out.config = c;
   namespace sc = schema::hp;
-  const std::string file(sc::kFile);
-  for (const SceneMaterial* m : mats)
-    out.uses.push_back({m->name,
-                        {{"hp_albedo_reflection", file, std::string(sc::kReflection.name) + m->name},
-                         {"hp_albedo_diffraction", file, std::string(sc::kDiffraction.name) + m->name},
-                         {"hp_albedo_layer", file, std::string(sc::kLayer.name) + m->name}},
-                        {}});
-  return out;
+  return per_material_scene<Config>(
+      "hp", "hp", sc::kFile,
+      {{"hp_albedo_reflection", &sc::kReflection},
+       {"hp_albedo_diffraction", &sc::kDiffraction},
+       {"hp_albedo_layer", &sc::kLayer}},
+      all, policy, &build, [](const SceneMaterial& m) {
+        double v[numerics::kHpParameterCount];
+        for (int i = 0; i < numerics::kHpParameterCount; ++i) v[i] = m.at(numerics::kHpParameterDomains[i].name);
+        return Material{m.name, numerics::hp_material_from_values(v)};  // checked by the scene model
+      });
 }
 
 }  // namespace brdftab::gen::hp

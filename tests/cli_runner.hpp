@@ -35,6 +35,14 @@ inline CliResult run_cli(const std::string& args, const std::string& input = "")
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out.txt"), slurp(dir / "err.txt")};
 }
 
+// An empty folder BRDFTAB_TEST_TMP/<name>_<pid> for one test case's files.
+inline std::filesystem::path scratch_dir(const std::string& name) {
+  const std::filesystem::path d = std::filesystem::path(BRDFTAB_TEST_TMP) / (name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
+
 inline bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 }  // namespace brdftab::testing

@@ -3,7 +3,6 @@
 // are validated with errors naming material, key, value and domain, and the runtime serves
 // the tables by role.
 #include <doctest/doctest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -21,16 +20,10 @@
 using namespace brdftab;
 using brdftab::testing::contains;
 using brdftab::testing::run_cli;
+using brdftab::testing::scratch_dir;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::path(BRDFTAB_TEST_TMP) / (name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 const char* kFilipCloth =
     R"({"name": "cloth", "model": "filip", "phi_a1": 0, "w1": 0.7, "a1": 0.5, "b1": 0.5, "m1": 1, "kd1": 0,
@@ -57,7 +50,7 @@ testing::CliResult plan(const fs::path& d, const std::string& text) {
 }  // namespace
 
 TEST_CASE("scene composite models: bad keys exit 2 naming material, key, value and domain") {
-  const fs::path d = scratch("scene_composite_bad");
+  const fs::path d = scratch_dir("scene_composite_bad");
   struct Case {
     std::string material, expect;
   };
@@ -95,7 +88,7 @@ TEST_CASE("scene composite models: bad keys exit 2 naming material, key, value a
 }
 
 TEST_CASE("scene composite models: plan lists the per-material tables, and grid cannot be forced") {
-  const fs::path d = scratch("scene_composite_plan");
+  const fs::path d = scratch_dir("scene_composite_plan");
   auto r = plan(d, scene(std::string(kHaze) + "," + kVarnish + "," + kFilipCloth));
   REQUIRE_MESSAGE(r.status == 0, r.err);
   for (const char* s : {"hazy_gloss: slices for 1 materials", "hp: slices for 1 materials", "filip: slices for 1 materials",
@@ -111,7 +104,7 @@ TEST_CASE("scene composite models: plan lists the per-material tables, and grid 
 }
 
 TEST_CASE("scene composite models: generate, check, and the runtime serves each role") {
-  const fs::path d = scratch("scene_composite_gen");
+  const fs::path d = scratch_dir("scene_composite_gen");
   std::ofstream(d / "s.json") << scene(std::string(kHaze) + "," + kVarnish);
   const std::string out = (d / "out").string();
   auto r = run_cli("generate -q --scene '" + (d / "s.json").string() + "' --out '" + out + "'");
