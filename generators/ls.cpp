@@ -39,6 +39,7 @@ Config read_config(const nlohmann::json& entry) {
   c.kd = r.boolean("kd", true);
   c.albedo = r.boolean("albedo", true);
   if (const nlohmann::json* list = r.raw("materials")) c.materials = read_ls_materials(*list, r.key_path("materials"));
+  else c.materials.clear();  // an entry without "materials" has none
   c.material_mu_points = static_cast<int>(r.integer("material_mu_points", c.material_mu_points, 4, 100000));
   c.brdf = r.boolean("brdf", c.brdf);
   c.brdf_c_step = r.number("brdf_c_step", c.brdf_c_step, 1e-3, 0.5);
@@ -220,6 +221,7 @@ Config test_config() {
   c.c_lo = 0.5;
   c.kd_c_step = 1.0 / 8;  // sqrt(1-c) in [0, 0.707]: 7 points
   c.albedo = false;
+  c.materials.clear();
   c.brdf = false;  // one half-space solve per c: tests/test_ls_brdf_tables.cpp builds small ones
   c.kd_error_points = 6;
   return c;
