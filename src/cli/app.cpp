@@ -81,8 +81,9 @@ int run_main(int argc, char** argv) {
   auto* x = app.add_subcommand("export", "write one table as a C++ header, .npy files or a GLSL snippet");
   x->add_option("file", ex.file, "table file (.h5)")->required();
   x->add_option("dataset", ex.dataset, "table name (`brdftab info FILE` lists them)")->required();
-  x->add_option("--format", ex.format, "header | npy | glsl (default: header)")
-      ->check(CLI::IsMember({"header", "npy", "glsl"}));
+  x->add_option("--format", ex.format,
+                "header | npy | glsl | pbrt-fourier (ls_brdf_modes_material_<name> only; default: header)")
+      ->check(CLI::IsMember({"header", "npy", "glsl", "pbrt-fourier"}));
   x->add_option("--out", ex.out_dir, "output folder (default: .)");
 
   AuditCommandOptions au;

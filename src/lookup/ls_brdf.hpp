@@ -158,6 +158,17 @@ class LsBrdfMaterial {
   }
   double c() const { return c_; }
   int modes() const { return main_.modes(); }
+  // The cosine-series coefficients of f_multiple in phi: out[m] = (2 - delta_m0)
+  // (s_i s_o)^m F_m(mu_i, mu_o) for m < modes() (f_multiple = sum_m out[m] cos(m phi)).
+  void multiple_cosine_coefficients(double mu_i, double mu_o, double* out) const {
+    ls_detail::check_input("mu_i", mu_i, 0x1p-1074, 1.0, "(0, 1]");
+    ls_detail::check_input("mu_o", mu_o, 0x1p-1074, 1.0, "(0, 1]");
+    const double mx = std::max(mu_i, mu_o), mn = std::min(mu_i, mu_o);
+    (mx >= main_.mu_lo() ? main_ : corner_).modes_at(c_, mx, std::sqrt(std::sqrt(mn / mx)), out);
+    const double p = std::sqrt((1 - mu_i) * (1 + mu_i) * (1 - mu_o) * (1 + mu_o));
+    double pm = 1;
+    for (int m = 0; m < modes(); ++m, pm *= p) out[m] *= (m == 0 ? 1.0 : 2.0) * pm;
+  }
   // mu_i, mu_o in (0, 1], phi finite (DomainError naming the value otherwise); mu_max below
   // the corner table's mu_lo is read at mu_lo.
   LsBrdfValue eval(double mu_i, double mu_o, double phi) const {
