@@ -30,7 +30,7 @@ struct Config {
   // Fourier-mode tables of the multiple-scattering BRDF (generators/ls_brdf.hpp): generic
   // over c (ls_brdf_modes, ls_brdf_corner) and, with material_brdf, one pair per material.
   bool brdf = true;
-  double brdf_c_step = 1.0 / 16;  // on sqrt(1 - c)
+  double brdf_c_step = 1.0 / 24;  // on sqrt(1 - c)
   int brdf_modes = 6, brdf_mu_points = 20, brdf_r_points = 20, brdf_corner_points = 12, brdf_corner_r_points = 16;
   int brdf_error_rows = 6, brdf_error_per_row = 256;
   bool material_brdf = true;

@@ -39,9 +39,10 @@ constexpr const char* kSource =
 constexpr const char* kLookup =
     "f = f_single + f_multiple; f_single = c p(-(mu_i mu_o + s_i s_o cos phi)) / (mu_i + mu_o) with "
     "p(u) = 2 (sqrt(1 - u^2) - u acos(u)) / (3 pi^2) (d'Eon Eq. 1, 17); f_multiple = sum_m (2 - delta_m0) "
-    "(s_i s_o)^m F_m cos(m phi), s = sqrt(1 - mu^2), F_m = table at (c,) m, mu_max = max(mu_i, mu_o), "
+    "(s_i s_o)^m F_m cos(m phi), s = sqrt(1 - mu^2), F_m = table at m, mu_max = max(mu_i, mu_o), "
     "r = (min(mu_i, mu_o) / mu_max)^(1/4); mu_max >= the main table's first mu_max: main table, else the corner "
-    "table (mu_max below its range: clamped); phi = 0 is the back-scatter side (phi_o = phi_i)";
+    "table (mu_max below its range: clamped); generic tables (with a c axis) hold F_m / c^2: F_m = c^2 table(c, m, "
+    "mu_max, r); phi = 0 is the back-scatter side (phi_o = phi_i)";
 // Declared single-core costs (measured on the 2-core CI machine, Release): one solve with
 // M modes, and one (mu_max, r) node of all modes.
 constexpr double kSolveSecondsPerMode = 0.09, kNodeSeconds = 6e-5;
@@ -76,13 +77,22 @@ std::vector<double> values_of(const lookup::Axis& a) {
   return x;
 }
 
-// Fills the modes of both zones at c into main/corner (M * nb * nr each).
-void fill_at(double c, const BrdfResolution& res, const ZoneAxes& z, double* main, double* corner) {
-  const numerics::LsHalfSpace h(c, numerics::ls_table_solver_options(res.modes));
+// Fills the modes of both zones at c into main/corner (M * nb * nr each). Generic tables
+// (over_c2) store F_m / c^2: f_multiple = c^2 (D + c T + ...) (double scattering first), so
+// F / c^2 stays smooth and O(1) as c -> 0 where F itself would lose its relative accuracy
+// to the absolute interpolation error (measured 0.4 relative at c = 1e-3 with F stored).
+// The node c = 0 is evaluated at c = 1e-6 (F / c^2 changes by ~1e-6 of itself).
+void fill_at(double c, const BrdfResolution& res, const ZoneAxes& z, double* main, double* corner, bool over_c2) {
+  const double ce = over_c2 ? std::max(c, 1e-6) : c;
+  const numerics::LsHalfSpace h(ce, numerics::ls_table_solver_options(res.modes));
   const std::size_t nm = std::size_t(z.main[1].n) * std::size_t(z.main[2].n) * std::size_t(res.modes);
   const std::size_t nc = std::size_t(z.corner[1].n) * std::size_t(z.corner[2].n) * std::size_t(res.modes);
   numerics::ls_mode_grid(h, values_of(z.main[1]), values_of(z.main[2]), res.modes, std::span<double>(main, nm));
   numerics::ls_mode_grid(h, values_of(z.corner[1]), values_of(z.corner[2]), res.modes, std::span<double>(corner, nc));
+  if (over_c2) {
+    for (std::size_t i = 0; i < nm; ++i) main[i] /= ce * ce;
+    for (std::size_t i = 0; i < nc; ++i) corner[i] /= ce * ce;
+  }
 }
 
 // Runs body(i) for i in [0, n) over OpenMP threads; rethrows the first exception.
@@ -220,7 +230,7 @@ std::vector<BuiltTable> build_brdf_material(const std::string& name, double c, d
   const std::size_t nm = std::size_t(res.modes) * std::size_t(res.mu_points) * std::size_t(res.r_points);
   const std::size_t nc = std::size_t(res.modes) * std::size_t(res.corner_points) * std::size_t(res.corner_r_points);
   std::vector<double> vm(nm, 0.0), vc(nc, 0.0);
-  if (!ctx.dry_run) fill_at(c, res, z, vm.data(), vc.data());
+  if (!ctx.dry_run) fill_at(c, res, z, vm.data(), vc.data(), false);
   lookup::Table tm(std::string(sc::kBrdfModesMaterial.name) + name, z.main, vm, res.storage, lookup::Interpolation::cubic);
   lookup::Table tc(std::string(sc::kBrdfCornerMaterial.name) + name, z.corner, vc, res.storage,
                    lookup::Interpolation::cubic);
@@ -257,7 +267,7 @@ std::vector<BuiltTable> build_brdf_generic(double c_lo, double c_hi, int c_point
   std::atomic<int> done{0};
   if (!ctx.dry_run)
     parallel_for(std::size_t(c_points), [&](std::size_t i) {
-      fill_at(ca.value(int(i)), res, z, vm.data() + i * pm, vc.data() + i * pc);
+      fill_at(ca.value(int(i)), res, z, vm.data() + i * pm, vc.data() + i * pc, true);
       const int d = ++done;
       if (omp_get_thread_num() == 0) ctx.report("ls_brdf_modes: fill", double(d) / c_points);
     });

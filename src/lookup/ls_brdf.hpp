@@ -91,7 +91,7 @@ class LsBrdfZone {
         }
         s += wc[a] * sa;
       }
-      F[m] = s;
+      F[m] = has_c_ ? s * c * c : s;  // generic tables hold F_m / c^2 (lookup/ls_schema.hpp)
     }
   }
 

@@ -33,18 +33,20 @@ inline constexpr DatasetSchema kAlbedoMaterial{"ls_albedo_material_", true, "A(m
 // (mu_max in [split, 1] on mu_max^(1/4)) and the corner table (mu_max in [mu_lo, split] on
 // log mu_max, where the log is linear). phi = 0 is the back-scatter side; single scattering
 // is not in the tables (closed form, d'Eon Eq. 17). The m axis is an index (integers only).
+// The generic tables (with a c axis) hold F_m / c^2 (f_multiple starts at c^2: smooth and
+// O(1) down to c = 0, where F_m itself would drown in the absolute interpolation error).
 inline constexpr AxisSchema kMode{"m", lookup::Transform::identity, "1"};
 inline constexpr AxisSchema kMuMax{"mu_max", lookup::Transform::fourth_root, "1"};
 inline constexpr AxisSchema kMuMaxLog{"mu_max", lookup::Transform::log, "1"};
 inline constexpr AxisSchema kRatio{"r", lookup::Transform::identity, "1"};
 inline constexpr DatasetSchema kBrdfModes{
     "ls_brdf_modes", false,
-    "F_m(c, mu_max, r) = f_m,ms / (s_i s_o)^m: Fourier modes of the multiple-scattering BRDF of the "
+    "F_m(c, mu_max, r) / c^2 = f_m,ms / ((s_i s_o)^m c^2): Fourier modes of the multiple-scattering BRDF of the "
     "Lambertian-sphere half space, main zone",
     4, {kC, kMode, kMuMax, kRatio}};
 inline constexpr DatasetSchema kBrdfCorner{
     "ls_brdf_corner", false,
-    "F_m(c, mu_max, r) = f_m,ms / (s_i s_o)^m: Fourier modes of the multiple-scattering BRDF of the "
+    "F_m(c, mu_max, r) / c^2 = f_m,ms / ((s_i s_o)^m c^2): Fourier modes of the multiple-scattering BRDF of the "
     "Lambertian-sphere half space, grazing corner zone",
     4, {kC, kMode, kMuMaxLog, kRatio}};
 // One material's modes at its fixed c (attributes ls_c, ls_kd): ls_brdf_modes_material_<name>
