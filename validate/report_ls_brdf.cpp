@@ -76,10 +76,12 @@ void report_brdf(ReportContext& ctx) {
 
   // 2. Committed tables at fresh random points.
   const std::string file(schema::ls::kFile);
-  auto check_table = [&](const std::string& label, const std::string& main_name, double c_fixed,
-                         auto eval) {
+  auto check_table = [&](const std::string& label, const std::string& main_name, const std::string& corner_name,
+                         double c_fixed, auto eval) {
     try {
       const auto& tm = ctx.tables->get(file, main_name);
+      const double stated = std::max(tm.info.attribute_number("max_rel_error", 0),
+                                     ctx.tables->get(file, corner_name).info.attribute_number("max_rel_error", 0));
       std::vector<double> cs;
       if (c_fixed >= 0) cs = {c_fixed};
       else
@@ -96,22 +98,23 @@ void report_brdf(ReportContext& ctx) {
           worst = std::max(worst, std::abs(eval(c, mi, mo, phi) - f) / f);
         }
       }
-      md << "| " << label << " | " << cs.size() * 300 << " | " << sci(worst) << " | "
-         << sci(tm.info.attribute_number("max_rel_error", 0)) << " |\n";
-      ctx.check_stated(main_name, worst, tm.info.attribute_number("max_rel_error", 0), "rel");
+      md << "| " << label << " | " << cs.size() * 300 << " | " << sci(worst) << " | " << sci(stated) << " |\n";
+      ctx.check_stated(main_name, worst, stated, "rel");
     } catch (const std::exception& e) {
       md << "| " << label << " | not available: " << e.what() << " | | |\n";
       ctx.fail(e.what());
     }
   };
   md << "Fourier-mode tables against a " << kModes
-     << "-mode solve with the table settings at fresh random points (mu >= 1e-6, main zone):\n\n"
+     << "-mode solve with the table settings at fresh random points (mu_i, mu_o uniform in mu^(1/4) on [1e-6, 1], "
+        "both zones; stated: the larger of the two zones'):\n\n"
         "| table | points | max rel error of f | stated |\n|---|---|---|---|\n";
   try {
     const auto& gm = ctx.tables->get(file, std::string(schema::ls::kBrdfModes.name));
     const auto& gc = ctx.tables->get(file, std::string(schema::ls::kBrdfCorner.name));
     const lookup::LsBrdfTables t(gm.table, gc.table);
-    check_table("ls_brdf_modes (generic, 3 random c)", std::string(schema::ls::kBrdfModes.name), -1,
+    check_table("ls_brdf_modes (generic, 3 random c)", std::string(schema::ls::kBrdfModes.name),
+                std::string(schema::ls::kBrdfCorner.name), -1,
                 [&](double c, double mi, double mo, double phi) { return t.eval(c, mi, mo, phi).f; });
   } catch (const std::exception& e) {
     md << "| generic | not available: " << e.what() << " | | |\n";
@@ -122,7 +125,7 @@ void report_brdf(ReportContext& ctx) {
       const auto& mm = ctx.tables->get(file, std::string(schema::ls::kBrdfModesMaterial.name) + name);
       const auto& mc = ctx.tables->get(file, std::string(schema::ls::kBrdfCornerMaterial.name) + name);
       const lookup::LsBrdfMaterial t(mm.table, mc.table, mm.info.attribute_number("ls_c", NAN));
-      check_table(std::string("material ") + name + " (c = " + sci(t.c()) + ")", mm.table.name(), t.c(),
+      check_table(std::string("material ") + name + " (c = " + sci(t.c()) + ")", mm.table.name(), mc.table.name(), t.c(),
                   [&](double, double mi, double mo, double phi) { return t.eval(mi, mo, phi).f; });
     } catch (const std::exception& e) {
       md << "| material " << name << " | not available: " << e.what() << " | | |\n";
