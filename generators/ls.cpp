@@ -18,6 +18,7 @@
 #include <tuple>
 #include <vector>
 
+#include "generators/ls_brdf.hpp"
 #include "generators/manifest.hpp"
 #include "lookup/ls_schema.hpp"
 #include "lookup/number_format.hpp"
@@ -38,10 +39,28 @@ Config read_config(const nlohmann::json& entry) {
   c.kd = r.boolean("kd", true);
   c.albedo = r.boolean("albedo", true);
   if (const nlohmann::json* list = r.raw("materials")) c.materials = read_ls_materials(*list, r.key_path("materials"));
+  else c.materials.clear();  // an entry without "materials" has none
   c.material_mu_points = static_cast<int>(r.integer("material_mu_points", c.material_mu_points, 4, 100000));
+  c.brdf = r.boolean("brdf", c.brdf);
+  c.brdf_c_step = r.number("brdf_c_step", c.brdf_c_step, 1e-3, 0.5);
+  auto points = [&r](const char* key, int& v, long long lo, long long hi) { v = static_cast<int>(r.integer(key, v, lo, hi)); };
+  points("brdf_modes", c.brdf_modes, 4, 48);
+  points("brdf_mu_points", c.brdf_mu_points, 4, 1000);
+  points("brdf_r_points", c.brdf_r_points, 4, 1000);
+  points("brdf_corner_points", c.brdf_corner_points, 4, 1000);
+  points("brdf_corner_r_points", c.brdf_corner_r_points, 4, 1000);
+  points("brdf_error_rows", c.brdf_error_rows, 1, 10000);
+  points("brdf_error_per_row", c.brdf_error_per_row, 1, 1000000);
+  c.material_brdf = r.boolean("material_brdf", c.material_brdf);
+  points("material_brdf_modes", c.material_brdf_modes, 4, 48);
+  points("material_brdf_mu_points", c.material_brdf_mu_points, 4, 1000);
+  points("material_brdf_r_points", c.material_brdf_r_points, 4, 1000);
+  points("material_brdf_corner_points", c.material_brdf_corner_points, 4, 1000);
+  points("material_brdf_corner_r_points", c.material_brdf_corner_r_points, 4, 1000);
+  points("material_brdf_error_points", c.material_brdf_error_points, 1, 1000000);
   r.finish();
-  if (!c.kd && !c.albedo && c.materials.empty())
-    throw ManifestError("tables.ls: kd and albedo are both false and no materials: nothing to generate");
+  if (!c.kd && !c.albedo && !c.brdf && c.materials.empty())
+    throw ManifestError("tables.ls: kd, albedo and brdf are false and no materials: nothing to generate");
   return c;
 }
 
@@ -49,9 +68,25 @@ nlohmann::json to_json(const Config& c) {
   nlohmann::json j = {{"c_range", {c.c_lo, c.c_hi}},      {"mu_range", {c.mu_lo, c.mu_hi}}, {"kd_c_step", c.kd_c_step},
           {"albedo_c_step", c.albedo_c_step}, {"albedo_mu_step", c.albedo_mu_step}, {"kd", c.kd},
           {"albedo", c.albedo}};
+  j["brdf"] = c.brdf;
+  j["brdf_c_step"] = c.brdf_c_step;
+  j["brdf_modes"] = c.brdf_modes;
+  j["brdf_mu_points"] = c.brdf_mu_points;
+  j["brdf_r_points"] = c.brdf_r_points;
+  j["brdf_corner_points"] = c.brdf_corner_points;
+  j["brdf_corner_r_points"] = c.brdf_corner_r_points;
+  j["brdf_error_rows"] = c.brdf_error_rows;
+  j["brdf_error_per_row"] = c.brdf_error_per_row;
   if (!c.materials.empty()) {
     j["materials"] = ls_materials_json(c.materials);
     j["material_mu_points"] = c.material_mu_points;
+    j["material_brdf"] = c.material_brdf;
+    j["material_brdf_modes"] = c.material_brdf_modes;
+    j["material_brdf_mu_points"] = c.material_brdf_mu_points;
+    j["material_brdf_r_points"] = c.material_brdf_r_points;
+    j["material_brdf_corner_points"] = c.material_brdf_corner_points;
+    j["material_brdf_corner_r_points"] = c.material_brdf_corner_r_points;
+    j["material_brdf_error_points"] = c.material_brdf_error_points;
   }
   return j;
 }
@@ -104,7 +139,22 @@ BuiltTable build_material(const LsMaterial& m, const Config& c, const GenerateCo
 
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
   std::vector<BuiltTable> tables;
-  for (const LsMaterial& m : c.materials) tables.push_back(build_material(m, c, ctx));
+  for (const LsMaterial& m : c.materials) {
+    tables.push_back(build_material(m, c, ctx));
+    if (c.material_brdf) {
+      BrdfResolution res;
+      res.modes = c.material_brdf_modes;
+      res.mu_points = c.material_brdf_mu_points;
+      res.r_points = c.material_brdf_r_points;
+      res.corner_points = c.material_brdf_corner_points;
+      res.corner_r_points = c.material_brdf_corner_r_points;
+      const BuiltTable& albedo = tables.back();
+      const double ls_c = std::get<double>(albedo.dataset.attributes.at("ls_c"));
+      const double ls_kd = std::get<double>(albedo.dataset.attributes.at("ls_kd"));
+      for (auto& t : build_brdf_material(m.name, ls_c, ls_kd, res, {1, c.material_brdf_error_points}, ctx))
+        tables.push_back(std::move(t));
+    }
+  }
   const double c_span = transformed_span(sc::kC.transform, c.c_lo, c.c_hi);
   if (c.kd) {
     TableSpec spec;
@@ -152,6 +202,17 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
     t.dataset.attributes["source"] = kSource;
     tables.push_back(std::move(t));
   }
+  if (c.brdf) {
+    BrdfResolution res;
+    res.modes = c.brdf_modes;
+    res.mu_points = c.brdf_mu_points;
+    res.r_points = c.brdf_r_points;
+    res.corner_points = c.brdf_corner_points;
+    res.corner_r_points = c.brdf_corner_r_points;
+    const int c_points = points_for_step(c_span, c.brdf_c_step);
+    for (auto& t : build_brdf_generic(c.c_lo, c.c_hi, c_points, res, {c.brdf_error_rows, c.brdf_error_per_row}, ctx))
+      tables.push_back(std::move(t));
+  }
   return tables;
 }
 
@@ -160,6 +221,8 @@ Config test_config() {
   c.c_lo = 0.5;
   c.kd_c_step = 1.0 / 8;  // sqrt(1-c) in [0, 0.707]: 7 points
   c.albedo = false;
+  c.materials.clear();
+  c.brdf = false;  // one half-space solve per c: tests/test_ls_brdf_tables.cpp builds small ones
   c.kd_error_points = 6;
   return c;
 }

@@ -14,7 +14,12 @@ std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& 
   const auto mats = materials_of(all, {"ls"});
   if (mats.empty()) return std::nullopt;
   Config slices, grid;
-  slices.kd = slices.albedo = false;
+  // The scene roles are the albedo maps (lookup/scene_set.cpp); the BRDF tables are not
+  // scene roles yet.
+  slices.materials.clear();
+  grid.materials.clear();
+  slices.kd = slices.albedo = slices.brdf = slices.material_brdf = false;
+  grid.brdf = false;
   int by_kd = 0;
   for (const SceneMaterial* m : mats) {
     slices.materials.push_back({m->name, m->has("c") ? m->at("c") : -1.0, m->has("k_d") ? m->at("k_d") : -1.0});

@@ -13,6 +13,8 @@
 
 namespace brdftab::validate::ls {
 
+void report_brdf(ReportContext& ctx);  // report_ls_brdf.cpp
+
 namespace {
 std::string sci(double v) {
   char b[32];
@@ -91,6 +93,7 @@ void report(ReportContext& ctx) {
     md << "Table ls_albedo not available: " << e.what() << "\n\n";
     ctx.fail(e.what());
   }
+  report_brdf(ctx);
 }
 
 }  // namespace brdftab::validate::ls

@@ -81,8 +81,10 @@ int run_main(int argc, char** argv) {
   auto* x = app.add_subcommand("export", "write one table as a C++ header, .npy files, a GLSL snippet or an OpenEXR image");
   x->add_option("file", ex.file, "table file (.h5)")->required();
   x->add_option("dataset", ex.dataset, "table name (`brdftab info FILE` lists them)")->required();
-  x->add_option("--format", ex.format, "header | npy | glsl | exr (default: header; glsl, exr: 1-D/2-D tables)")
-      ->check(CLI::IsMember({"header", "npy", "glsl", "exr"}));
+  x->add_option("--format", ex.format,
+                "header | npy | glsl | exr | pbrt-fourier (default: header; glsl, exr: 1-D/2-D tables; "
+                "pbrt-fourier: ls_brdf_modes_material_<name> only)")
+      ->check(CLI::IsMember({"header", "npy", "glsl", "exr", "pbrt-fourier"}));
   x->add_option("--out", ex.out_dir, "output folder (default: .)");
 
   AuditCommandOptions au;

@@ -14,6 +14,9 @@
 //   exr     DIR/DATASET.exr: for 1-D and 2-D tables, an OpenEXR image of the values (float32,
 //           channel Y, width = last axis) with the axis metadata as header attributes
 //           (export_exr.hpp); the layout the GLSL snippet samples.
+//   pbrt-fourier  DIR/DATASET.bsdf: a per-material Lambertian-sphere BRDF
+//           (ls_brdf_modes_material_<name> with its ls_brdf_corner_material_<name>) as a
+//           layer-laboratory Fourier BSDF for pbrt-v3 / Mitsuba 0.6 (cli/export_pbrt_fourier.hpp).
 // The numbers are written in shortest round-trip form (%.17g / %.9g), so they read back
 // as the same doubles / floats.
 #include <cctype>
@@ -31,7 +34,9 @@
 #include "cli/commands.hpp"
 #include "cli/csv.hpp"
 #include "cli/export_exr.hpp"
+#include "cli/export_pbrt_fourier.hpp"
 #include "cli/foreign_isolation.hpp"
+#include "lookup/ls_schema.hpp"
 #include "lookup/table_file.hpp"
 
 namespace brdftab::cli {
@@ -231,6 +236,31 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
     return 1;
   }
   const auto& t = lt.table;
+  if (o.format == "pbrt-fourier") {
+    namespace sc = schema::ls;
+    if (!sc::kBrdfModesMaterial.matches(o.dataset)) {
+      err << "brdftab export: --format pbrt-fourier: table '" << escape_control(o.dataset)
+          << "' is not a per-material Lambertian-sphere BRDF table (" << sc::kBrdfModesMaterial.name << "<name>)\n";
+      return 2;
+    }
+    try {
+      const std::string name = o.dataset.substr(sc::kBrdfModesMaterial.name.size());
+      const lookup::LoadedTable corner = lookup::load_table(o.file, std::string(sc::kBrdfCornerMaterial.name) + name);
+      const double c = lt.info.attribute_number("ls_c", NAN);
+      const lookup::LsBrdfMaterial mat(t, corner.table, c);
+      std::error_code ec;
+      fs::create_directories(o.out_dir, ec);
+      if (ec) throw std::runtime_error("cannot create the folder '" + o.out_dir.string() + "': " + ec.message());
+      const fs::path path = o.out_dir / (identifier(t.name()) + ".bsdf");
+      const std::vector<unsigned char> bytes = pbrt_fourier_bsdf(mat);
+      write_file(path, std::string(bytes.begin(), bytes.end()));
+      out << path.string() << "\n";
+    } catch (const std::exception& e) {
+      err << "brdftab export: " << escape_control(e.what()) << "\n";
+      return 1;
+    }
+    return 0;
+  }
   if ((o.format == "glsl" || o.format == "exr") && t.rank() > 2) {
     err << "brdftab export: --format " << o.format << ": table '" << escape_control(o.dataset) << "' has rank "
         << t.rank() << "; " << (o.format == "glsl" ? "GLSL" : "OpenEXR") << " export covers 1-D and 2-D tables\n";

@@ -5,7 +5,8 @@
 //              (table with --dataset ls_albedo_material_NAME: that material's A(mu) slice)
 //   ls_brdf    c, mu_i, mu_o, phi -> f, f_single, f_multiple
 //              exact (true medium) | three_term | fit (Eq. 17-45 as printed) |
-//              fit_corrected (misprints corrected, validate/ERRATA.md) | fit_fast (Eq. 48)
+//              fit_corrected (misprints corrected, validate/ERRATA.md) | fit_fast (Eq. 48) |
+//              table (generic Fourier-mode tables ls_brdf_modes + ls_brdf_corner, lookup/ls_brdf.hpp)
 //   ls_phase, ls_phase_sample, ls_constants (eval_ls_phase.cpp)
 // phi = phi_o - phi_i between the outgoing directions; phi = 0 is the back-scatter side.
 // Exact solves are per c (~0.5 s for albedos, ~15 s for the BRDF at Legendre order 128) and
@@ -18,6 +19,7 @@
 #include "cli/quantity.hpp"
 #include "lookup/ls.hpp"
 #include "lookup/table_file.hpp"
+#include "lookup/ls_brdf.hpp"
 #include "lookup/table_set.hpp"
 #include "numerics/ls_albedo.hpp"
 #include "numerics/ls_deon_model.hpp"
@@ -53,6 +55,21 @@ const numerics::LsThreeTermBrdf& three_term(double c) {
 
 const lookup::Table& table(const EvalContext& ctx, const schema::DatasetSchema& ds) {
   return ctx.tables->table(std::string(schema::ls::kFile), std::string(ds.name));
+}
+
+// The generic BRDF evaluator over the tables ls_brdf_modes / ls_brdf_corner, built once per
+// thread and table pair (it copies the values).
+const lookup::LsBrdfTables& brdf_tables(const EvalContext& ctx) {
+  const lookup::Table& m = table(ctx, schema::ls::kBrdfModes);
+  const lookup::Table& c = table(ctx, schema::ls::kBrdfCorner);
+  thread_local std::unique_ptr<lookup::LsBrdfTables> s;
+  thread_local const lookup::Table *km = nullptr, *kc = nullptr;
+  thread_local std::size_t sm = 0, sc = 0;
+  if (!s || km != &m || kc != &c || sm != m.size() || sc != c.size()) {
+    s = std::make_unique<lookup::LsBrdfTables>(m, c);
+    km = &m, kc = &c, sm = m.size(), sc = c.size();
+  }
+  return *s;
 }
 
 }  // namespace
@@ -141,6 +158,10 @@ std::vector<Quantity> quantities() {
       const double fs = numerics::ls_f_single(in[0], in[1], in[2], in[3]);
       out[0] = numerics::deon_brdf(in[0], in[1], in[2], in[3], v), out[1] = fs, out[2] = out[0] - fs;
     };
+  };
+  f.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
+    const lookup::LsBrdfValue v = brdf_tables(ctx).eval(in[0], in[1], in[2], in[3]);
+    out[0] = v.f, out[1] = v.f_single, out[2] = v.f_multiple;
   };
   f.methods["fit"] = model(numerics::LsDeonVariant::as_printed);
   f.methods["fit_corrected"] = model(numerics::LsDeonVariant::corrected);

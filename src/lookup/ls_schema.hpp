@@ -21,6 +21,43 @@ inline constexpr DatasetSchema kAlbedo{
 // One material's A(mu) at its fixed c (scenes, docs/scenes.md): ls_albedo_material_<name>,
 // attributes ls_c and ls_kd (its exact spherical albedo from the same solve).
 inline constexpr DatasetSchema kAlbedoMaterial{"ls_albedo_material_", true, "A(mu) of material '", 1, {kMu}};
-inline constexpr std::array kDatasets{kKd, kAlbedo, kAlbedoMaterial};
+// Fourier modes of the multiple-scattering BRDF (issue 9; numerics/ls_brdf_modes.hpp,
+// runtime evaluator lookup/ls_brdf.hpp):
+//   f_multiple(c; mu_i, mu_o, phi) = sum_{m < M} (2 - delta_m0) (s_i s_o)^m F_m cos(m phi),
+//   F_m = f_m,ms / (s_i s_o)^m,  s = sqrt(1 - mu^2),
+// on the reciprocity-folded coordinates mu_max = max(mu_i, mu_o), r = (min / max)^(1/4)
+// in [0, 1] (F_m is symmetric in mu_i, mu_o, so half the square is stored). Taking out
+// (s_i s_o)^m removes the square root at mu = 1 of odd modes; r and the fourth root take
+// the mu log mu behaviour of the H-function-like terms. f_m,ms diverges like
+// log(1 / mu_max) at the corner mu_i, mu_o -> 0, so there are two zones: the main table
+// (mu_max in [split, 1] on mu_max^(1/4)) and the corner table (mu_max in [mu_lo, split] on
+// log mu_max, where the log is linear). phi = 0 is the back-scatter side; single scattering
+// is not in the tables (closed form, d'Eon Eq. 17). The m axis is an index (integers only).
+// The generic tables (with a c axis) hold F_m / c^2 (f_multiple starts at c^2: smooth and
+// O(1) down to c = 0, where F_m itself would drown in the absolute interpolation error).
+inline constexpr AxisSchema kMode{"m", lookup::Transform::identity, "1"};
+inline constexpr AxisSchema kMuMax{"mu_max", lookup::Transform::fourth_root, "1"};
+inline constexpr AxisSchema kMuMaxLog{"mu_max", lookup::Transform::log, "1"};
+inline constexpr AxisSchema kRatio{"r", lookup::Transform::identity, "1"};
+inline constexpr DatasetSchema kBrdfModes{
+    "ls_brdf_modes", false,
+    "F_m(c, mu_max, r) / c^2 = f_m,ms / ((s_i s_o)^m c^2): Fourier modes of the multiple-scattering BRDF of the "
+    "Lambertian-sphere half space, main zone",
+    4, {kC, kMode, kMuMax, kRatio}};
+inline constexpr DatasetSchema kBrdfCorner{
+    "ls_brdf_corner", false,
+    "F_m(c, mu_max, r) / c^2 = f_m,ms / ((s_i s_o)^m c^2): Fourier modes of the multiple-scattering BRDF of the "
+    "Lambertian-sphere half space, grazing corner zone",
+    4, {kC, kMode, kMuMaxLog, kRatio}};
+// One material's modes at its fixed c (attributes ls_c, ls_kd): ls_brdf_modes_material_<name>
+// and ls_brdf_corner_material_<name>.
+inline constexpr DatasetSchema kBrdfModesMaterial{"ls_brdf_modes_material_", true,
+                                                  "F_m(mu_max, r) main zone of material '", 3,
+                                                  {kMode, kMuMax, kRatio}};
+inline constexpr DatasetSchema kBrdfCornerMaterial{"ls_brdf_corner_material_", true,
+                                                   "F_m(mu_max, r) corner zone of material '", 3,
+                                                   {kMode, kMuMaxLog, kRatio}};
+inline constexpr std::array kDatasets{kKd,        kAlbedo,           kAlbedoMaterial,    kBrdfModes,
+                                      kBrdfCorner, kBrdfModesMaterial, kBrdfCornerMaterial};
 
 }  // namespace brdftab::schema::ls

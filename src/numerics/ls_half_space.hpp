@@ -52,6 +52,9 @@ class LsHalfSpace {
   int modes() const { return int(modes_.size()); }
   const LsDomMode& mode(int m) const { return modes_[m]; }
   const std::vector<double>& coefficients() const { return a_; }
+  // Where mode m's entries (degrees k = m..L) start in Direction::lam / dev.
+  std::size_t direction_offset(int m) const { return offset_[std::size_t(m)]; }
+  int legendre_order() const { return lmax_; }
 
  private:
   double c_;

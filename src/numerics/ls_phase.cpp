@@ -1,5 +1,7 @@
 #include "numerics/ls_phase.hpp"
 
+#include "lookup/ls_phase_formula.hpp"
+
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
@@ -32,14 +34,7 @@ double tail_h(double x) {
 
 double ls_phase(double u) {
   require_closed("u", u, -1.0, 1.0, "[-1, 1]");
-  // d'Eon Eq. 1 (u = cos theta): 2 (sin theta - theta cos theta) / (3 pi^2). sin - theta cos
-  // cancels as theta -> 0 (~theta^3/3), where p is ~0 anyway; the absolute error stays ~1e-17.
-  const double theta = std::acos(u);
-  if (theta < 1e-3) {
-    const double t2 = theta * theta;  // sin t - t cos t = t^3/3 - t^5/30 + t^7/840
-    return 2.0 * theta * t2 * (1.0 / 3.0 - t2 * (1.0 / 30.0 - t2 / 840.0)) / (3.0 * kPi * kPi);
-  }
-  return 2.0 * (std::sin(theta) - theta * u) / (3.0 * kPi * kPi);
+  return lookup::ls_phase_formula(u);  // d'Eon Eq. 1 (lookup/ls_phase_formula.hpp)
 }
 
 double ls_phase_three_term(double u) {
