@@ -16,7 +16,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "lookup/detail/batch_chunks.hpp"
+#include "lookup/batch_chunks.hpp"
 #include "lookup/ghs_sigma_rel_schema.hpp"
 #include "lookup/number_format.hpp"
 #include "lookup/table.hpp"

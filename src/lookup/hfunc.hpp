@@ -17,7 +17,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "lookup/detail/batch_chunks.hpp"
+#include "lookup/batch_chunks.hpp"
 #include "lookup/hfunc_schema.hpp"
 #include "lookup/table.hpp"
 

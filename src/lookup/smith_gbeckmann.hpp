@@ -11,7 +11,7 @@
 // The exact value is numerics::smith_gbeckmann_g1(a, p), same arguments.
 #include <span>
 
-#include "lookup/detail/batch_chunks.hpp"
+#include "lookup/batch_chunks.hpp"
 #include "lookup/smith_gbeckmann_schema.hpp"
 #include "lookup/table.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Internal: the family batched lookups (lookup/hfunc.hpp, smith_gbeckmann.hpp,
+// The family batched lookups (lookup/hfunc.hpp, smith_gbeckmann.hpp,
 // ghs_sigma_rel.hpp) take their inputs as separate arrays (one per argument) and map them
 // to table coordinates; this runs such a map in chunks of points on the stack and hands each
 // chunk to Table::eval_batch, whose kernel (AVX2 when the CPU has it) applies the axis
