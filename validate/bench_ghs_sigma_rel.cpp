@@ -5,6 +5,7 @@
 // values at the benchmark points).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -80,6 +81,21 @@ void register_benchmarks(const BenchContext& ctx) {
     state.counters["table_bytes"] = static_cast<double>(table->table.bytes());
   });
 
+  // Batched (ghs_sigma_rel2_batch): mixed materials (every point its own B, c) and one
+  // material (B, c fixed: log1p(K) and F(1) once).
+  for (bool one_material : {false, true})
+    benchmark::RegisterBenchmark(one_material ? "ghs_sigma_rel/table_batch/grid_3d_one_material"
+                                              : "ghs_sigma_rel/table_batch/grid_3d_mixed",
+                                 [pts, table, grid, one_material](benchmark::State& state) {
+                                   std::vector<double> B = pts->B, c = pts->c, out(pts->B.size());
+                                   if (one_material) std::fill(B.begin(), B.end(), 37.0), std::fill(c.begin(), c.end(), 1.8);
+                                   for (auto _ : state) {
+                                     lookup::ghs_sigma_rel2_batch(*grid, B, c, pts->s, out);
+                                     benchmark::DoNotOptimize(out.data());
+                                   }
+                                   per_call(state, pts->B.size());
+                                 });
+
   // Per-material 1-D table (257 points, float64): one material, s varying.
   {
     const fam::Material m{"bench", 37.0, 1.8};
@@ -96,6 +112,16 @@ void register_benchmarks(const BenchContext& ctx) {
       per_call(state, s_exact->size());
       state.counters["max_rel_err"] = max_rel;
       state.counters["table_bytes"] = static_cast<double>(table->bytes());
+    });
+    benchmark::RegisterBenchmark("ghs_sigma_rel/table_batch/material_1d", [m, table, s_exact](benchmark::State& state) {
+      const lookup::GhsSigmaRelMaterial lm(*table, m.B, fam::Config{}.w_scale);
+      std::vector<double> s, out(s_exact->size());
+      for (const auto& se : *s_exact) s.push_back(se.first);
+      for (auto _ : state) {
+        lm.eval_batch(s, out);
+        benchmark::DoNotOptimize(out.data());
+      }
+      per_call(state, s.size());
     });
   }
 

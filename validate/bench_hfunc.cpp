@@ -118,10 +118,24 @@ void register_benchmarks(const BenchContext& ctx) {
             state.counters["max_rel_err"] = e;
           });
         };
-        if (compact)
+        // The family's batched lookup (HfuncTable::eval_batch: separate c and mu arrays).
+        auto register_family_batch = [&](auto f) {
+          benchmark::RegisterBenchmark(("hfunc/family_batch/" + ds).c_str(), [pts, f](benchmark::State& state) {
+            std::vector<double> out(pts->c.size());
+            for (auto _ : state) {
+              f->eval_batch(pts->c, pts->mu, out);
+              benchmark::DoNotOptimize(out.data());
+            }
+            per_call(state, pts->c.size());
+          });
+        };
+        if (compact) {
           register_inlined(std::make_shared<lookup::HfuncTable<float>>(table->table));
-        else
+          register_family_batch(std::make_shared<lookup::HfuncTable<float>>(table->table));
+        } else {
           register_inlined(std::make_shared<lookup::HfuncTable<double>>(table->table));
+          register_family_batch(std::make_shared<lookup::HfuncTable<double>>(table->table));
+        }
         benchmark::RegisterBenchmark(("hfunc/table_batch/" + ds).c_str(), [pts, table](benchmark::State& state) {
           const lookup::Table& t = table->table;
           std::vector<double> xy(2 * pts->c.size()), out(pts->c.size());

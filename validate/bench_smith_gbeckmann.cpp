@@ -5,6 +5,7 @@
 // at the benchmark points).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -101,6 +102,19 @@ void register_benchmarks(const BenchContext& ctx) {
                                      state.counters["max_abs_err_G1"] = max_abs;
                                      state.counters["table_bytes"] = static_cast<double>(loaded->table.bytes());
                                    });
+      // Batched (smith_gbeckmann_g1_batch): one material (p fixed, M1 once) and mixed p.
+      for (bool one_material : {true, false})
+        benchmark::RegisterBenchmark(
+            (std::string("smith_gbeckmann/table_batch/") + (one_material ? "one_p/" : "mixed_p/") + dataset).c_str(),
+            [pts, loaded, table, one_material](benchmark::State& state) {
+              std::vector<double> p = pts->p, out(pts->p.size());
+              if (one_material) std::fill(p.begin(), p.end(), 1.7);
+              for (auto _ : state) {
+                lookup::smith_gbeckmann_g1_batch(*table, pts->a, p, out);
+                benchmark::DoNotOptimize(out.data());
+              }
+              per_call(state, pts->p.size());
+            });
     }
   }
 

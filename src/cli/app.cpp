@@ -68,6 +68,8 @@ int run_main(int argc, char** argv) {
   auto* b = app.add_subcommand("bench", "speed against error: exact numerics, tables, fits (Google Benchmark)");
   b->add_option("--tables", be.tables_dir, "table folder (default: tables)");
   b->add_option("--report", be.report_dir, "also write benchmark JSON into this folder");
+  b->add_option("--pareto", be.pareto_dir,
+                "instead: write run time against error of every method (CSV + gnuplot script per quantity) into this folder");
   b->allow_extras();
 
   std::vector<std::string> info_files;

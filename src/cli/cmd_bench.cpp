@@ -1,15 +1,25 @@
 // `brdftab bench [--tables DIR] [--report DIR] [--benchmark_* ...]`: Google Benchmark run of
 // every registered group; accuracy is reported in counters next to the times.
+// `brdftab bench --pareto DIR`: time against error per quantity (validate/pareto.hpp).
 #include <benchmark/benchmark.h>
 
+#include <iostream>
 #include <ostream>
 
 #include "cli/commands.hpp"
 #include "validate/bench.hpp"
+#include "validate/pareto.hpp"
 
 namespace brdftab::cli {
 
 int run_bench(const BenchOptions& o, std::ostream& err) {
+  if (!o.pareto_dir.empty()) {
+    if (!o.benchmark_args.empty()) {
+      err << "brdftab bench: --pareto takes no Google Benchmark options (got '" << o.benchmark_args[0] << "')\n";
+      return 2;
+    }
+    return validate::pareto::run(o.pareto_dir, std::cout, err);
+  }
   std::vector<std::string> args = {"brdftab-bench"};
   for (const auto& a : o.benchmark_args) args.push_back(a);
   if (!o.report_dir.empty()) {

@@ -83,6 +83,7 @@ struct BenchOptions {
   std::filesystem::path tables_dir;
   std::filesystem::path report_dir;  // empty: console only
   std::vector<std::string> benchmark_args;  // passed to Google Benchmark (e.g. --benchmark_filter=...)
+  std::filesystem::path pareto_dir;  // non-empty: write time-against-error CSV + gnuplot per quantity instead
 };
 int run_bench(const BenchOptions& o, std::ostream& err);
 

@@ -8,11 +8,15 @@
 //   double v = ghs_sigma_rel2(grid, B, c, s);
 //   const brdftab::lookup::GhsSigmaRelMaterial gold(tables.get("ghs_sigma_rel.h5", "ghs_sigma_rel2_material_gold"));
 //   double v = ghs_sigma_rel2(gold, s);                          // per-material constants once
+//   ghs_sigma_rel2_batch(grid, B_values, c_values, s_values, out);  // many points
+//   gold.eval_batch(s_values, out);
 // The exact value is numerics::ghs_sigma_rel2(B, c, s), same arguments.
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <string>
 
+#include "lookup/batch_chunks.hpp"
 #include "lookup/ghs_sigma_rel_schema.hpp"
 #include "lookup/number_format.hpp"
 #include "lookup/table.hpp"
@@ -75,6 +79,15 @@ class GhsSigmaRelMaterial {
     schema::check_table(t.table, t.info.attribute_string("quantity"), schema::ghs_sigma_rel::kMaterial);
   }
   double operator()(double s) const { return table_->eval1(std::log1p(K_ * (1 - s)) * inv_log1p_K_); }
+  // Batched: out[i] = (*this)(s[i]) bit for bit (the w axis is identity). Throws
+  // std::invalid_argument unless s and out have one size.
+  void eval_batch(std::span<const double> s, std::span<double> out) const {
+    detail::check_batch_sizes("GhsSigmaRelMaterial::eval_batch", s.size(), out.size());
+    detail::batch_by_chunks<1>(*table_, out.size(), out.data(), OutOfDomain::clamp,
+                               [&](std::size_t start, std::size_t m, double* w) {
+                                 for (std::size_t j = 0; j < m; ++j) w[j] = std::log1p(K_ * (1 - s[start + j])) * inv_log1p_K_;
+                               });
+  }
 
  private:
   const Table* table_;
@@ -82,5 +95,39 @@ class GhsSigmaRelMaterial {
 };
 
 inline double ghs_sigma_rel2(const GhsSigmaRelMaterial& m, double s) { return m(s); }
+
+// Batched sigma_rel^2 from the 3-D grid: out[i] = ghs_sigma_rel2(g, B[i], c[i], s[i]). The
+// per-material constants log1p(w_scale B) and F(1) are computed once per run of equal (B, c),
+// in the same operations as the scalar path; the grid's batch kernel applies the B and c axis
+// transforms vectorized. On AVX2 CPUs its vector log is not glibc's: the results lie within
+// a tested 3e-13 relative of the scalar path. Throws std::invalid_argument unless B, c, s and
+// out have one size.
+inline void ghs_sigma_rel2_batch(const GhsSigmaRelGrid& g, std::span<const double> B, std::span<const double> c,
+                                 std::span<const double> s, std::span<double> out,
+                                 OutOfDomain policy = OutOfDomain::clamp) {
+  detail::check_batch_sizes("ghs_sigma_rel2_batch", B.size(), out.size());
+  detail::check_batch_sizes("ghs_sigma_rel2_batch", c.size(), out.size());
+  detail::check_batch_sizes("ghs_sigma_rel2_batch", s.size(), out.size());
+  const std::size_t n = out.size();
+  // Pass 1: R(B, w, c) from the table into out.
+  double last_B = 0, K = 0, log1p_K = 0;
+  bool have = false;
+  detail::batch_by_chunks<3>(g.table(), n, out.data(), policy, [&](std::size_t start, std::size_t m, double* x) {
+    for (std::size_t j = 0; j < m; ++j) {
+      const double Bj = B[start + j];
+      if (!have || !(Bj == last_B)) K = g.w_scale() * Bj, log1p_K = std::log1p(K), last_B = Bj, have = true;
+      x[3 * j] = Bj;
+      x[3 * j + 1] = std::log1p(K * (1 - s[start + j])) / log1p_K;  // schema::ghs_sigma_rel::w_of_s
+      x[3 * j + 2] = c[start + j];
+    }
+  });
+  // Pass 2: times F(1) (schema::ghs_sigma_rel::normal_value), once per run of equal (B, c).
+  double lB = 0, lc = 0, f1 = 0;
+  have = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!have || !(B[i] == lB && c[i] == lc)) f1 = schema::ghs_sigma_rel::normal_value(B[i], c[i]), lB = B[i], lc = c[i], have = true;
+    out[i] *= f1;
+  }
+}
 
 }  // namespace brdftab::lookup

@@ -8,6 +8,10 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <type_traits>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace brdftab::lookup {
 
@@ -34,6 +38,40 @@ inline void stencil(const interp::AxisMap& a, double x, int& base, double* w) {
 }
 
 using interp::accumulate;
+
+#if defined(__SSE2__)
+// interp::accumulate for float32 storage, cubic, rank >= 3: the K contiguous values of the last axis
+// widened two at a time (cvtps2pd, exact like static_cast<double>) instead of one by one; the
+// products and sums are interp::accumulate's, in its order (the AVX2 batch tests compare
+// against this path bit for bit). GCC 12 compiles the generic form of the 3-D cubic float32
+// kernel to 64 cvtss2sd, each after a pxor, with spills (measured 47 ns against 37 here); for
+// rank 1 and 2, and for linear stencils, the generic form is faster (1-D cubic 5.6 against
+// 10.6 ns, 3-D linear 8.1 against 9.0 ns), so it stays there.
+template <int d, int D, int K>
+inline double accumulate_f32(const float* p, const std::size_t* strides, const double (*w)[K]) {
+  if constexpr (d == D - 1) {
+    double v[K];
+    for (int k = 0; k < K; k += 2)
+      _mm_storeu_pd(v + k, _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p + k)))));
+    double s = w[d][0] * v[0];
+    for (int k = 1; k < K; ++k) s += w[d][k] * v[k];
+    return s;
+  } else {
+    double s = w[d][0] * accumulate_f32<d + 1, D, K>(p, strides, w);
+    for (int k = 1; k < K; ++k) s += w[d][k] * accumulate_f32<d + 1, D, K>(p + k * strides[d], strides, w);
+    return s;
+  }
+}
+#endif
+
+// The tensor sum of the scalar kernel.
+template <int D, int K, class T>
+inline double accumulate_point(const T* p, const std::size_t* strides, const double (*w)[K]) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<T, float> && D >= 3 && K == 4) return accumulate_f32<0, D, K>(p, strides, w);
+#endif
+  return accumulate<0, D, K, T>(p, strides, w);
+}
 
 }  // namespace
 
@@ -76,7 +114,7 @@ struct KernelImpl {
       stencil<K, Identity>(maps[d], x[d], base[d], w[d]);
       offset += base[d] * strides[d];
     }
-    const double v = accumulate<0, D, K, T>(values + offset, strides, w);
+    const double v = accumulate_point<D, K, T>(values + offset, strides, w);
     return nan ? std::numeric_limits<double>::quiet_NaN() : v;
   }
   // flatten: the stencil and the sum are inlined into the kernel (GCC otherwise may call the

@@ -1,0 +1,174 @@
+// The family batched lookups (HfuncTable::eval_batch, smith_gbeckmann_g1_batch,
+// ghs_sigma_rel2_batch, GhsSigmaRelMaterial::eval_batch) against their scalar forms on the
+// committed tables, with NaN, infinities, out-of-range values and ragged batch sizes: bit for
+// bit where every axis transform rounds as its scalar form (sqrt, x^(1/4), identity, x/(k+x),
+// and every transform on the generic path), within the derived bound of the vector log
+// (tests/test_lookup_simd.cpp) on log axes of the AVX2 path.
+#include <doctest/doctest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "lookup/detail/table_simd.hpp"
+#include "lookup/ghs_sigma_rel.hpp"
+#include "lookup/hfunc.hpp"
+#include "lookup/smith_gbeckmann.hpp"
+#include "lookup/table_file.hpp"
+
+namespace fs = std::filesystem;
+using namespace brdftab;
+using namespace brdftab::lookup;
+
+namespace {
+
+const fs::path kTables = fs::path(BRDFTAB_SOURCE_DIR) / "tables";
+
+// Same value, or both NaN.
+bool same_bits(double a, double b) { return (a != a && b != b) || std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+// Awkward values of one argument in [lo, hi]: inside, at and beyond both ends, NaN, +-inf.
+double awkward(std::mt19937_64& rng, double lo, double hi) {
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  const double r = uni(rng);
+  if (r < 0.7) return lo + (hi - lo) * uni(rng);
+  if (r < 0.75) return lo;
+  if (r < 0.8) return hi;
+  if (r < 0.85) return lo - 1 - 10 * uni(rng);
+  if (r < 0.9) return hi + 1 + 10 * uni(rng);
+  if (r < 0.94) return NAN;
+  if (r < 0.97) return INFINITY;
+  return -INFINITY;
+}
+
+const std::vector<std::size_t> kSizes = {0, 1, 3, 4, 5, 255, 256, 257, 700};
+
+// The bound of tests/test_lookup_simd.cpp for a table whose log axes are `log_axes`: the
+// vector log moves u by <= 2^-51 |u|, the grid coordinate by dt, the interpolant by dt times
+// its largest slope in t, times max |table value|; plus 64 eps of rounding (2.25^rank cubic).
+double log_bound(const Table& t, std::initializer_list<int> log_axes) {
+  const bool cubic = t.interpolation() == Interpolation::cubic;
+  double vmax = 0;
+  std::vector<int> idx(t.rank(), 0);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    std::size_t rem = i;
+    for (int d = t.rank() - 1; d >= 0; --d) idx[d] = static_cast<int>(rem % t.axis(d).n), rem /= t.axis(d).n;
+    vmax = std::max(vmax, std::abs(t.at_index(idx)));
+  }
+  const double other = cubic ? std::pow(2.25, t.rank() - 1) : 1.0;
+  const double slope = (cubic ? 20.0 / 3.0 : 2.0) * other;
+  double sum = 0;
+  for (int d : log_axes) {
+    const Axis& a = t.axis(d);
+    const double umax = std::max(std::abs(a.u0), std::abs(a.u0 + (a.n - 1) * a.du));
+    sum += (std::ldexp(umax / std::abs(a.du), -51) + std::ldexp(a.n - 1.0, -50)) * slope;
+  }
+  return (sum + 64 * std::ldexp(1.0, -52) * std::pow(cubic ? 2.25 : 1.0, t.rank())) * vmax;
+}
+
+}  // namespace
+
+TEST_CASE("HfuncTable eval_batch equals the scalar lookup bit for bit") {
+  for (const char* ds : {"hfunc_ls0", "hfunc_ls1_compact", "hfunc_ls0_compact"}) {
+    const LoadedTable lt = load_table(kTables / "hfunc.h5", ds);
+    auto check = [&](const auto& h) {
+      for (bool avx2 : {true, false}) {
+        detail::set_avx2_enabled(avx2);
+        std::mt19937_64 rng(7);
+        for (std::size_t n : kSizes) {
+          std::vector<double> c(n), mu(n), out(n, -7.0);
+          for (std::size_t i = 0; i < n; ++i) c[i] = awkward(rng, 0, 1), mu[i] = awkward(rng, 0, 1);
+          h.eval_batch(c, mu, out);
+          int bad = 0;
+          for (std::size_t i = 0; i < n; ++i) bad += !same_bits(out[i], h(c[i], mu[i]));
+          INFO(ds << ", avx2 " << avx2 << ", n = " << n);
+          CHECK(bad == 0);
+        }
+      }
+      detail::set_avx2_enabled(true);
+      std::vector<double> c(3), mu(2), out(3);
+      CHECK_THROWS_AS(h.eval_batch(c, mu, out), std::invalid_argument);
+    };
+    if (lt.table.storage() == Storage::float32)
+      check(HfuncTable<float>(lt.table));
+    else
+      check(HfuncTable<double>(lt.table));
+  }
+}
+
+TEST_CASE("smith_gbeckmann_g1_batch against the scalar lookup: exact on the generic path, within the vector-log bound on AVX2") {
+  const LoadedTable lt = load_table(kTables / "smith_gbeckmann.h5", "smith_gbeckmann_g1_compact");
+  const SmithGBeckmannTable t(lt.table);
+  const double bound = log_bound(lt.table, {0});
+  for (bool avx2 : {true, false}) {
+    detail::set_avx2_enabled(avx2);
+    std::mt19937_64 rng(8);
+    for (std::size_t n : kSizes) {
+      std::vector<double> a(n), p(n), out(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        // runs of equal p (a material) and single ones; p never NaN here (M1(NaN) is NaN: both paths agree)
+        p[i] = (i % 5 != 0 && i > 0) ? p[i - 1] : awkward(rng, 0.25, 4.0);
+        if (!(p[i] > 0) || std::isinf(p[i])) p[i] = 1.5;
+        a[i] = awkward(rng, 0, 20);
+      }
+      smith_gbeckmann_g1_batch(t, a, p, out);
+      double worst = 0;
+      int nan_mismatch = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double s = smith_gbeckmann_g1(t, a[i], p[i]);
+        if ((s != s) != (out[i] != out[i])) ++nan_mismatch;
+        else if (s == s) worst = std::max(worst, std::abs(out[i] - s));
+      }
+      INFO("avx2 " << avx2 << ", n = " << n << ": max |batch - scalar| " << worst << ", bound " << bound);
+      CHECK(nan_mismatch == 0);
+      CHECK(worst <= (avx2 ? bound : 0.0));
+    }
+  }
+  detail::set_avx2_enabled(true);
+  std::vector<double> a(3), p(3), out(2);
+  CHECK_THROWS_AS(smith_gbeckmann_g1_batch(t, a, p, out), std::invalid_argument);
+}
+
+TEST_CASE("ghs_sigma_rel2_batch and the material batch against their scalar lookups") {
+  const LoadedTable grid_t = load_table(kTables / "ghs_sigma_rel.h5", "ghs_sigma_rel2_grid");
+  const GhsSigmaRelGrid g(grid_t);
+  const double bound = log_bound(grid_t.table, {0, 2});
+  // A material table built here (the default file has none): R(w) = 1 + w^2 on 33 points.
+  const Axis w = make_axis("w", Transform::identity, 0.0, 1.0, 33, 1.0, std::string(schema::ghs_sigma_rel::kWUnits));
+  std::vector<double> v(33);
+  for (int i = 0; i < 33; ++i) v[i] = 1 + w.value(i) * w.value(i);
+  const Table mt("ghs_sigma_rel2_material_test", {w}, v, Storage::float64, Interpolation::cubic);
+  const GhsSigmaRelMaterial mat(mt, 3.0, g.w_scale());
+  for (bool avx2 : {true, false}) {
+    detail::set_avx2_enabled(avx2);
+    std::mt19937_64 rng(9);
+    for (std::size_t n : kSizes) {
+      std::vector<double> B(n), c(n), s(n), out(n), mout(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const bool run = i % 4 != 0 && i > 0;
+        B[i] = run ? B[i - 1] : std::exp(awkward(rng, std::log(1e-2), std::log(1e3)));
+        c[i] = run ? c[i - 1] : awkward(rng, 1.0, 10.0);
+        s[i] = awkward(rng, 0, 1);
+      }
+      ghs_sigma_rel2_batch(g, B, c, s, out);
+      mat.eval_batch(s, mout);
+      double worst = 0;
+      int nan_mismatch = 0, mat_bad = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double sc = ghs_sigma_rel2(g, B[i], c[i], s[i]);
+        if ((sc != sc) != (out[i] != out[i])) ++nan_mismatch;
+        else if (sc == sc) worst = std::max(worst, std::abs(out[i] - sc));
+        mat_bad += !same_bits(mout[i], mat(s[i]));
+      }
+      INFO("avx2 " << avx2 << ", n = " << n << ": max |batch - scalar| " << worst << ", bound " << bound);
+      CHECK(nan_mismatch == 0);
+      CHECK(worst <= (avx2 ? bound : 0.0));
+      CHECK(mat_bad == 0);
+    }
+  }
+  detail::set_avx2_enabled(true);
+}

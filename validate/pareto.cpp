@@ -1,0 +1,201 @@
+// `brdftab bench --pareto`: the front, the CSV and gnuplot writers, the timer, and the run
+// over the quantities (measured in validate/pareto_<family>.cpp).
+#include "validate/pareto.hpp"
+
+#include <time.h>  // clock_gettime (POSIX)
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "lookup/number_format.hpp"
+
+namespace brdftab::validate::pareto {
+
+std::vector<bool> pareto_front(const std::vector<Point>& rows) {
+  std::vector<bool> on(rows.size(), false);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i].max_error) continue;
+    bool dominated = false;
+    for (std::size_t j = 0; j < rows.size() && !dominated; ++j) {
+      if (j == i || !rows[j].max_error) continue;
+      const double ei = *rows[i].max_error, ej = *rows[j].max_error;
+      const double ti = rows[i].ns_per_value, tj = rows[j].ns_per_value;
+      dominated = ej <= ei && tj <= ti && (ej < ei || tj < ti);
+    }
+    on[i] = !dominated;
+  }
+  return on;
+}
+
+namespace {
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string num(double v) { return lookup::format_number(v); }
+
+std::string group_of(const Point& p) {
+  std::string g = p.method;
+  if (!p.interpolation.empty()) g += " " + p.interpolation;
+  if (!p.storage.empty()) g += " " + p.storage;
+  return g;
+}
+
+// gnuplot string literal in single quotes ('' escapes a quote).
+std::string gp_string(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
+  return q + "'";
+}
+
+void open_or_throw(std::ofstream& f, const std::filesystem::path& p) {
+  f.open(p);
+  if (!f) throw std::runtime_error("cannot write " + p.string());
+}
+
+}  // namespace
+
+void write_quantity(const std::filesystem::path& dir, const Quantity& q) {
+  const std::vector<bool> front = pareto_front(q.rows);
+  const std::string stem = "pareto_" + q.key;
+  {
+    std::ofstream f;
+    open_or_throw(f, dir / (stem + ".csv"));
+    f << "quantity,method,variant,storage,interpolation,table_bytes,ns_per_value,max_error,error_kind,error_source,"
+         "on_front\n";
+    for (std::size_t i = 0; i < q.rows.size(); ++i) {
+      const Point& p = q.rows[i];
+      f << csv_field(q.key) << ',' << csv_field(p.method) << ',' << csv_field(p.variant) << ',' << p.storage << ','
+        << p.interpolation << ',' << num(p.table_bytes) << ',' << num(p.ns_per_value) << ','
+        << (p.max_error ? num(*p.max_error) : std::string()) << ',' << csv_field(q.error_kind) << ','
+        << csv_field(p.error_source) << ',' << (front[i] ? 1 : 0) << '\n';
+    }
+    if (!f.flush()) throw std::runtime_error("cannot write " + (dir / (stem + ".csv")).string());
+  }
+  std::ofstream g;
+  open_or_throw(g, dir / (stem + ".gp"));
+  g << "# " << q.title << ": `gnuplot " << stem << ".gp` writes " << stem << ".svg (data as in " << stem
+    << ".csv)\n"
+    << "set terminal svg size 1000,640 dynamic noenhanced\n"
+    << "set output " << gp_string(stem + ".svg") << "\n"
+    << "set title \"" << q.title << "\\nCPU time per value (one thread) against " << q.error_kind << " at "
+    << q.points << " points\""
+    << "\nset logscale xy\nset format x '%.0e'\nset grid\nset key outside right top\n"
+    << "set xlabel " << gp_string(q.error_kind) << "\nset ylabel 'ns per value'\n";
+  // The front as a staircase (error ascending), each method group as its own series.
+  std::vector<std::pair<double, double>> fr;
+  std::map<std::string, std::vector<std::size_t>> groups;
+  std::vector<std::string> order;
+  for (std::size_t i = 0; i < q.rows.size(); ++i) {
+    const Point& p = q.rows[i];
+    if (front[i]) fr.push_back({*p.max_error, p.ns_per_value});
+    if (!p.max_error) {  // the reference: a horizontal line at its time
+      g << "set arrow from graph 0, first " << num(p.ns_per_value) << " to graph 1, first " << num(p.ns_per_value)
+        << " nohead dashtype 2\nset label " << gp_string(p.method + " " + p.variant + " (reference)") << " at graph 0.02, first "
+        << num(p.ns_per_value * 1.15) << "\n";
+      continue;
+    }
+    const std::string k = group_of(p);
+    if (!groups.count(k)) order.push_back(k);
+    groups[k].push_back(i);
+  }
+  std::sort(fr.begin(), fr.end());
+  double tmin = std::numeric_limits<double>::infinity(), tmax = 0;  // y range: every row, references too
+  for (const Point& p : q.rows) tmin = std::min(tmin, p.ns_per_value), tmax = std::max(tmax, p.ns_per_value);
+  if (tmax > 0) g << "set yrange [" << num(tmin / 1.5) << ":" << num(tmax * 2) << "]\n";
+  g << "$front << EOD\n";
+  for (const auto& [e, t] : fr) g << num(e) << ' ' << num(t) << '\n';
+  g << "EOD\n";
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    g << "$g" << k << " << EOD\n";
+    for (std::size_t i : groups[order[k]])
+      g << num(*q.rows[i].max_error) << ' ' << num(q.rows[i].ns_per_value) << " \"" << q.rows[i].variant << "\"\n";
+    g << "EOD\n";
+  }
+  g << "plot $front using 1:2 with steps linewidth 2 linecolor rgb 'gray' title 'Pareto front'";
+  for (std::size_t k = 0; k < order.size(); ++k)
+    g << ", \\\n     $g" << k << " using 1:2 with points pointtype " << 1 + k % 14 << " linecolor " << 1 + k
+      << " pointsize 1.2 title "
+      << gp_string(order[k]) << ", \\\n     $g" << k
+      << " using 1:2:3 with labels offset char 0.8, char 0.5 font ',8' notitle";
+  g << "\n";
+  if (!g.flush()) throw std::runtime_error("cannot write " + (dir / (stem + ".gp")).string());
+}
+
+double ns_per_value(std::size_t n, const std::function<void()>& run, double min_seconds) {
+  auto cpu = [] {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  };
+  double best = std::numeric_limits<double>::infinity();
+  for (int rep = 0; rep < 3; ++rep) {
+    const double t0 = cpu();
+    double elapsed = 0;
+    long calls = 0;
+    do {
+      run();
+      ++calls;
+      elapsed = cpu() - t0;
+    } while (elapsed < min_seconds);
+    best = std::min(best, elapsed / static_cast<double>(calls) / static_cast<double>(n) * 1e9);
+  }
+  return best;
+}
+
+lookup::Table retabulated(const lookup::Table& t, lookup::Storage storage, lookup::Interpolation interpolation) {
+  std::vector<lookup::Axis> axes;
+  for (int d = 0; d < t.rank(); ++d) axes.push_back(t.axis(d));
+  std::vector<double> values(t.size());
+  std::vector<int> idx(t.rank(), 0);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    values[i] = t.at_index(idx);
+    for (int d = t.rank() - 1; d >= 0; --d) {  // row-major increment, last axis fastest
+      if (++idx[d] < t.axis(d).n) break;
+      idx[d] = 0;
+    }
+  }
+  return lookup::Table(t.name(), axes, values, storage, interpolation);
+}
+
+int run(const std::filesystem::path& dir, std::ostream& log, std::ostream& err) {
+  try {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir)) throw std::runtime_error("cannot create the folder " + dir.string());
+    for (auto measure : {&measure_hfunc_h0, &measure_smith_gbeckmann_g1, &measure_ghs_sigma_rel2}) {
+      const Quantity q = measure();
+      write_quantity(dir, q);
+      const std::vector<bool> front = pareto_front(q.rows);
+      log << q.title << " (" << q.error_kind << ", " << q.points << " points): " << (dir / ("pareto_" + q.key + ".csv")).string()
+          << "\n";
+      for (std::size_t i = 0; i < q.rows.size(); ++i) {
+        const Point& p = q.rows[i];
+        char line[64];
+        std::snprintf(line, sizeof line, "%.3g ns, error ", p.ns_per_value);
+        log << "  " << (front[i] ? '*' : ' ') << ' ' << group_of(p) << ' ' << p.variant << ": " << line;
+        if (p.max_error) {
+          std::snprintf(line, sizeof line, "%.2g", *p.max_error);
+          log << line << "\n";
+        } else {
+          log << "reference\n";
+        }
+      }
+    }
+  } catch (const std::exception& e) {
+    err << "brdftab bench --pareto: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace brdftab::validate::pareto
