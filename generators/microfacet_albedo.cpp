@@ -269,13 +269,39 @@ int mu_points(double lo, double hi, double step) {
 
 // Declared single-core cost per exact E (dry runs, scene cost model: reproducible
 // decisions): GGX and Beckmann 0.2-20 ms, ~3 ms typical; generalized Beckmann 20-80 ms. One
-// E_avg ~ 130 E. (Values shared through AlbedoCache are counted once per table, so a dry
-// estimate of the compact + precise pair is high by the compact part.)
+// E_avg ~ 130 E. Values are shared through AlbedoCache: the first of the four quantities'
+// tables pays (and the precise before the compact), the others cost nothing.
 constexpr double kValueSeconds = 3e-3, kGValueSeconds = 50e-3, kAvgPerValue = 130;
 
-BuiltTable finish(TableSpec spec, const RowFunction& row, const GenerateContext& ctx, double value_seconds) {
+// Targeted error points: where random points rarely land and the tables are worst, the
+// smallest roughness (one-sided stencils at the range's edge) with mu a few times the
+// roughness (the grazing transition, whose width in mu scales with the roughness while the
+// mu axis does not: measured 1.6e-5 there for the compact Beckmann table where 1152 random
+// points found 1.1e-5). Roughness r_lo * {1.01, 1.07, 1.2, 1.5, 2}, mu = r * {1, 1.5, 2, 2.5,
+// 3, 4}, inside the ranges; `outer` holds leading coordinates (p for the 3-D tables).
+constexpr const char* kTargetedText = "roughness r = r_lo * {1.01, 1.07, 1.2, 1.5, 2}, mu = r * {1, 1.5, 2, 2.5, 3, 4}";
+std::vector<std::vector<double>> targeted_grazing(double r_lo, double r_hi, double mu_lo, double mu_hi,
+                                                  const std::vector<double>& outer) {
+  std::vector<std::vector<double>> pts;
+  for (double fr : {1.01, 1.07, 1.2, 1.5, 2.0}) {
+    const double r = r_lo * fr;
+    if (r > r_hi) continue;
+    for (double fm : {1.0, 1.5, 2.0, 2.5, 3.0, 4.0}) {
+      const double mu = r * fm;
+      if (!(mu >= mu_lo && mu <= mu_hi)) continue;
+      std::vector<double> pt = outer;
+      pt.push_back(r);
+      pt.push_back(mu);
+      pts.push_back(std::move(pt));
+    }
+  }
+  return pts;
+}
+
+BuiltTable finish(TableSpec spec, const RowFunction& row, const GenerateContext& ctx, double value_seconds,
+                  double row_seconds = 0) {
   spec.generator = "microfacet_albedo";
-  spec.cost_row_seconds = 0;
+  spec.cost_row_seconds = row_seconds;
   spec.cost_value_seconds = value_seconds;
   spec.interpolation = lookup::Interpolation::cubic;
   // split_bias falls to ~1e-7 at normal incidence and small alpha: relative error only
@@ -307,11 +333,13 @@ void build_ndf(const Config& c, int ndf, const GenerateContext& ctx, std::vector
       spec.method = kMethodE;
       spec.error_rows = c.error_rows;
       spec.error_per_row = c.error_per_row;
+      spec.targeted_points = targeted_grazing(c.alpha_lo, c.alpha_hi, c.mu_lo, c.mu_hi, {});
+      spec.targeted_text = kTargetedText;
       const RowFunction row = [&cache, q](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
         const std::vector<MicrofacetAlbedo> e = cache.row(outer[0], 1.0, mus);
         for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
       };
-      tables.push_back(finish(std::move(spec), row, ctx, kValueSeconds));
+      tables.push_back(finish(std::move(spec), row, ctx, q == 0 && (precise || !c.precise) ? kValueSeconds : 0.0));
     }
   }
   // E_avg(alpha): 1-D, float64 (a few hundred bytes: compact and precise at once).
@@ -351,11 +379,13 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
     spec.method = kMethodE;
     spec.error_rows = c.g_error_rows;
     spec.error_per_row = c.g_error_per_row;
+    spec.targeted_points = targeted_grazing(c.beta_lo, c.beta_hi, c.mu_lo, c.mu_hi, {std::sqrt(c.p_lo * c.p_hi)});
+    spec.targeted_text = kTargetedText;
     const RowFunction row = [&cache, q](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
       const std::vector<MicrofacetAlbedo> e = cache.row(outer[1], outer[0], mus);
       for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
     };
-    tables.push_back(finish(std::move(spec), row, ctx, kGValueSeconds));
+    tables.push_back(finish(std::move(spec), row, ctx, q == 0 ? kGValueSeconds : 0.0));
   }
   // Per material: the same (beta, mu) nodes at a fixed p (cache hits where p is a p node).
   for (double p : c.material_p) {
@@ -370,11 +400,13 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
       spec.method = kMethodE;
       spec.error_rows = c.g_error_rows;
       spec.error_per_row = c.g_error_per_row;
+      spec.targeted_points = targeted_grazing(c.beta_lo, c.beta_hi, c.mu_lo, c.mu_hi, {});
+      spec.targeted_text = kTargetedText;
       const RowFunction row = [&cache, q, p](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
         const std::vector<MicrofacetAlbedo> e = cache.row(outer[0], p, mus);
         for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
       };
-      tables.push_back(finish(std::move(spec), row, ctx, kGValueSeconds));
+      tables.push_back(finish(std::move(spec), row, ctx, q == 0 ? kGValueSeconds : 0.0));
     }
   }
   for (int q = 0; q < 2; ++q) {
@@ -444,7 +476,9 @@ void build_materials(const Config& c, const GenerateContext& ctx, std::vector<Bu
         const std::vector<MicrofacetAlbedo> e = cache->row(rough_v, p, mus);
         for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
       };
-      BuiltTable t = finish(std::move(spec), row, ctx, kind == NdfKind::gbeckmann ? kGValueSeconds : kValueSeconds);
+      // The E_avg (~130 E) is paid by the E_corr table: half per row (its row and its error row).
+      const double vs = q > 0 ? 0.0 : kind == NdfKind::gbeckmann ? kGValueSeconds : kValueSeconds;
+      BuiltTable t = finish(std::move(spec), row, ctx, vs, 0.5 * kAvgPerValue * vs);
       t.dataset.attributes["material"] = m.name;
       if (kind == NdfKind::gbeckmann) t.dataset.attributes["p"] = m.p;
       if (q == 0) {
