@@ -2,8 +2,11 @@
 //   fresnel_dr             F_dr(eta) 1-D, exact by the closed form numerics::fresnel_dr
 //                          (~155 us per value; checked against its quadrature in
 //                          tests/test_fresnel_dr.cpp);
-//   fresnel_avg_conductor  F_avg(n, k) 2-D, exact by adaptive Gauss-Kronrod
-//                          numerics::fresnel_avg_conductor (~14 us per value, 1e-14 absolute).
+//   fresnel_avg_conductor_n_above_1 / _n_below_1
+//                          F_avg(n, k) 2-D in two tables meeting at n = 1 (schema says why),
+//                          exact by adaptive Gauss-Kronrod numerics::fresnel_avg_conductor
+//                          (~30 us per value, 1e-14 absolute); the measured error includes
+//                          targeted points near the cone at n = 1, k = 0.
 // Pointwise F (dielectric, conductor) is cheap in closed form and is not tabulated.
 #include "generators/fresnel.hpp"
 
@@ -55,8 +58,8 @@ nlohmann::json to_json(const Config& c) {
 namespace {
 
 // Generation cost on one core (cost model and plan, docs/scenes.md): F_dr closed form in
-// 50-digit arithmetic ~155 us per value, F_avg Gauss-Kronrod ~14 us (more near n = 1, k = 0).
-constexpr double kDrValueSeconds = 155e-6, kAvgValueSeconds = 14e-6;
+// 50-digit arithmetic ~155 us per value, F_avg Gauss-Kronrod ~30 us (up to ~8 ms near n = 1, k -> 0).
+constexpr double kDrValueSeconds = 155e-6, kAvgValueSeconds = 30e-6;
 
 constexpr const char* kSource =
     "Holzschuch & Pacanowski, A two-scale microfacet reflectance model combining reflection and diffraction, "
@@ -87,30 +90,59 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
     tables.push_back(std::move(t));
   }
   if (c.avg_conductor) {
-    TableSpec spec;
-    spec.dataset = std::string(sc::kAvgConductor.name);
-    spec.quantity = std::string(sc::kAvgConductor.quantity);
-    spec.axes = {
-        axis_spec(sc::kN, c.n_lo, c.n_hi,
-                  points_for_step(transformed_span(sc::kN.transform, c.n_lo, c.n_hi), c.avg_n_step)),
-        axis_spec(sc::kK, c.k_lo, c.k_hi,
-                  points_for_step(transformed_span(sc::kK.transform, c.k_lo, c.k_hi), c.avg_k_step))};
-    spec.interpolation = lookup::Interpolation::cubic;
-    spec.domain = "n in " + range_text(c.n_lo, c.n_hi) + ", k in " + range_text(c.k_lo, c.k_hi);
-    spec.method =
-        "adaptive Gauss-Kronrod (31 points) in mu of the complex-form F, graded towards mu = 0, 1e-14 absolute "
-        "(numerics::fresnel_avg_conductor)";
-    spec.generator = "fresnel";
-    spec.error_rows = c.avg_error_rows;
-    spec.error_per_row = c.avg_error_per_row;
-    spec.cost_row_seconds = 0;
-    spec.cost_value_seconds = kAvgValueSeconds;
-    const RowFunction row = [](std::span<const double> outer, std::span<const double> ks, std::span<double> out) {
-      for (std::size_t j = 0; j < ks.size(); ++j) out[j] = numerics::fresnel_avg_conductor(outer[0], ks[j]);
-    };
-    BuiltTable t = build_table(spec, row, ctx);
-    t.dataset.attributes["source"] = kSource;
-    tables.push_back(std::move(t));
+    // Two tables meeting at n = 1 (lookup/fresnel_schema.hpp says why): n above 1 on
+    // ln(n - 1), n below 1 on ln(1/n - 1) (axis inv_n), each from 1 + kAvgGap.
+    const double g1 = 1.0 + sc::kAvgGap;
+    int avg_tables = 0;
+    for (const bool above : {true, false}) {
+      const double lo = above ? std::max(c.n_lo, g1) : std::max(1.0 / c.n_hi, g1);
+      const double hi = above ? c.n_hi : 1.0 / c.n_lo;
+      if (!(hi > lo * (1.0 + 1e-9))) continue;  // the range lies on the other side of 1
+      const schema::DatasetSchema& ds = above ? sc::kAvgConductorAbove : sc::kAvgConductorBelow;
+      TableSpec spec;
+      spec.dataset = std::string(ds.name);
+      spec.quantity = std::string(ds.quantity);
+      const schema::AxisSchema& ax = above ? sc::kN : sc::kInvN;
+      spec.axes = {axis_spec(ax, lo, hi, points_for_step(transformed_span(ax.transform, lo, hi), c.avg_n_step)),
+                   axis_spec(sc::kK, c.k_lo, c.k_hi,
+                             points_for_step(transformed_span(sc::kK.transform, c.k_lo, c.k_hi), c.avg_k_step))};
+      spec.storage = lookup::Storage::float32;
+      spec.interpolation = lookup::Interpolation::cubic;
+      spec.domain = (above ? "n in " + range_text(lo, hi) : "1/n in " + range_text(lo, hi)) + ", k in " +
+                    range_text(c.k_lo, c.k_hi);
+      spec.method =
+          "adaptive Gauss-Kronrod (31 points) in mu of the complex-form F, knots graded towards mu = 0 and the "
+          "smoothed critical angle, 1e-12 relative or 1e-15 absolute per panel (numerics::fresnel_avg_conductor)";
+      spec.generator = "fresnel";
+      spec.error_rows = c.avg_error_rows;
+      spec.error_per_row = c.avg_error_per_row;
+      spec.rel_floor = 1e-3;  // F_avg -> 0 at the cone: relative error only where F_avg > 1e-3
+      // Targeted: the cone at n = 1, k = 0, where the old single table was worst:
+      // |n - 1| (resp. 1/n - 1) = 10^-a, k = 0 and 10^-b.
+      for (double a = 0.5; a <= 7.0; a += 0.5) {
+        const double x = 1.0 + std::pow(10.0, -a);
+        if (!(x >= lo && x <= hi)) continue;
+        for (double b = 0.5; b <= 8.5; b += 0.5) {
+          const double k = b > 8.0 ? 0.0 : std::pow(10.0, -b);
+          if (k >= c.k_lo && k <= c.k_hi) spec.targeted_points.push_back({x, k});
+        }
+      }
+      spec.targeted_text = std::string(above ? "n - 1" : "1/n - 1") + " = 10^-a, a = 0.5 ... 7, k = 0 and 10^-b, b = 0.5 ... 8";
+      spec.cost_row_seconds = 0;
+      spec.cost_value_seconds = kAvgValueSeconds;
+      const RowFunction row = [above](std::span<const double> outer, std::span<const double> ks, std::span<double> out) {
+        const double n = above ? outer[0] : 1.0 / outer[0];
+        for (std::size_t j = 0; j < ks.size(); ++j) out[j] = numerics::fresnel_avg_conductor(n, ks[j]);
+      };
+      BuiltTable t = build_table(spec, row, ctx);
+      t.dataset.attributes["source"] = kSource;
+      tables.push_back(std::move(t));
+      ++avg_tables;
+    }
+    if (avg_tables == 0)
+      throw ManifestError("tables.fresnel: n_range " + range_text(c.n_lo, c.n_hi) + " lies within " +
+                          range_text(1.0 / (1.0 + sc::kAvgGap), 1.0 + sc::kAvgGap) +
+                          " (the straight-line gap between the F_avg tables): widen it");
   }
   return tables;
 }

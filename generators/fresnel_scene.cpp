@@ -3,8 +3,8 @@
 // Decision: scalars, not tables. A material's F_dr(eta) (dielectric, key "eta") or
 // F_avg(n, k) (conductor, keys "n", "k") is ONE number per material: computed exactly at
 // generation (closed form ~155 us, Gauss-Kronrod ~14 us) it costs 8 bytes in the scene index
-// and has no interpolation error, where the grids cost 3.9 KB + 137 KB and carry 3.3e-9 /
-// ~1e-3 (near n = 1, k = 0) error. Even 1,000 materials take ~0.2 s. A per-material 1-D
+// and has no interpolation error, where the grids cost 3.9 KB + ~270 KB and carry 3.3e-9 /
+// ~5e-7 error. Even 1,000 materials take ~0.2 s. A per-material 1-D
 // "slice" has no free axis left, so "slices" means the same scalars. The grids are still
 // right when eta varies per shading point (texture-mapped index): override
 // "families": {"fresnel": {"form": "grid"}} builds them (ranges widened to the materials).
@@ -46,7 +46,13 @@ std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& 
     for (const SceneMaterial* m : dielectrics)
       uses[m->name].tables.push_back({"F_dr", std::string(sc::kFile), std::string(sc::kDr.name)});
     for (const SceneMaterial* m : conductors)
-      uses[m->name].tables.push_back({"F_avg", std::string(sc::kFile), std::string(sc::kAvgConductor.name)});
+      for (const auto& [role, ds] : {std::pair{"F_avg_n_above_1", &sc::kAvgConductorAbove},
+                                     std::pair{"F_avg_n_below_1", &sc::kAvgConductorBelow}}) {
+        // Only the sides the widened n range builds (fresnel.cpp skips a side it does not reach).
+        const bool above = ds == &sc::kAvgConductorAbove;
+        if (above ? g.n_hi > 1.0 + 2 * sc::kAvgGap : g.n_lo < 1.0 / (1.0 + 2 * sc::kAvgGap))
+          uses[m->name].tables.push_back({role, std::string(sc::kFile), std::string(ds->name)});
+      }
   } else {
     out.choice.form = kFormScalars;
     out.choice.reason = "one exact number per material (8 bytes, no interpolation error); override form grid for tables";

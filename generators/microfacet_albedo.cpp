@@ -17,6 +17,8 @@
 
 #include <cmath>
 #include <functional>
+#include <memory>
+#include <set>
 #include <mutex>
 #include <span>
 #include <tuple>
@@ -35,6 +37,45 @@ namespace sc = schema::microfacet_albedo;
 using numerics::MicrofacetAlbedo;
 using numerics::MicrofacetAlbedoAvg;
 using numerics::NdfKind;
+
+namespace {
+// "materials": [{"name": ..., "ndf": "ggx" | "beckmann" | "gbeckmann", "alpha" | "beta": ..., "p": ...}]
+std::vector<Material> read_materials(const nlohmann::json& list, const std::string& where) {
+  if (!list.is_array()) throw ManifestError(where + ": expected a list of materials");
+  std::vector<Material> out;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string ipath = where + "[" + std::to_string(i) + "]";
+    const nlohmann::json& m = list[i];
+    if (!m.is_object()) throw ManifestError(ipath + ": expected an object");
+    Material mat;
+    if (!m.contains("name") || !m["name"].is_string()) throw ManifestError(ipath + ".name: expected a string");
+    mat.name = m["name"].get<std::string>();
+    if (!names.insert(mat.name).second) throw ManifestError(ipath + ".name: duplicate material '" + mat.name + "'");
+    if (!m.contains("ndf") || !m["ndf"].is_string()) throw ManifestError(ipath + ".ndf: expected \"ggx\", \"beckmann\" or \"gbeckmann\"");
+    mat.ndf = m["ndf"].get<std::string>();
+    if (mat.ndf != "ggx" && mat.ndf != "beckmann" && mat.ndf != "gbeckmann")
+      throw ManifestError(ipath + ".ndf: '" + mat.ndf + "' is not ggx, beckmann or gbeckmann");
+    const char* rkey = mat.ndf == "gbeckmann" ? "beta" : "alpha";
+    for (const auto& [key, value] : m.items())
+      if (key != "name" && key != "ndf" && key != rkey && !(key == "p" && mat.ndf == "gbeckmann"))
+        throw ManifestError(ipath + ": unknown key '" + key + "'");
+    if (!m.contains(rkey) || !m[rkey].is_number()) throw ManifestError(ipath + "." + rkey + ": expected a number");
+    mat.roughness = m[rkey].get<double>();
+    if (!(mat.roughness >= 1e-3 && mat.roughness <= 10.0))
+      throw ManifestError(ipath + "." + rkey + ": " + lookup::format_number(mat.roughness) + " is outside [0.001, 10]");
+    if (mat.ndf == "gbeckmann") {
+      if (!m.contains("p") || !m["p"].is_number()) throw ManifestError(ipath + ".p: expected a number");
+      mat.p = m["p"].get<double>();
+      if (!(mat.p >= numerics::kSmithGBeckmannPMin && mat.p <= numerics::kSmithGBeckmannPMax))
+        throw ManifestError(ipath + ".p: " + lookup::format_number(mat.p) + " is outside " +
+                            range_text(numerics::kSmithGBeckmannPMin, numerics::kSmithGBeckmannPMax));
+    }
+    out.push_back(mat);
+  }
+  return out;
+}
+}  // namespace
 
 Config read_config(const nlohmann::json& entry) {
   EntryReader r(entry, "tables.microfacet_albedo");
@@ -78,13 +119,16 @@ Config read_config(const nlohmann::json& entry) {
   c.g_error_per_row = static_cast<int>(r.integer("g_error_per_row", c.g_error_per_row, 1, 100000));
   c.g_avg_error_rows = static_cast<int>(r.integer("g_avg_error_rows", c.g_avg_error_rows, 1, 100000));
   c.g_avg_error_per_row = static_cast<int>(r.integer("g_avg_error_per_row", c.g_avg_error_per_row, 1, 100000));
+  if (const nlohmann::json* list = r.raw("materials")) c.materials = read_materials(*list, r.key_path("materials"));
+  c.material_mu_points = static_cast<int>(r.integer("material_mu_points", c.material_mu_points, 4, 100000));
   r.finish();
-  if (!((c.ggx || c.beckmann) && (c.compact || c.precise)) && !c.gbeckmann)
+  if (!((c.ggx || c.beckmann) && (c.compact || c.precise)) && !c.gbeckmann && c.materials.empty())
     throw ManifestError("tables.microfacet_albedo: no NDF and variant selected: nothing to generate");
   return c;
 }
 
-nlohmann::json to_json(const Config& c) {
+namespace {
+nlohmann::json to_json_grids(const Config& c) {
   return {{"alpha_range", {c.alpha_lo, c.alpha_hi}},
           {"mu_range", {c.mu_lo, c.mu_hi}},
           {"compact_log_alpha_step", c.compact_log_alpha_step},
@@ -111,6 +155,22 @@ nlohmann::json to_json(const Config& c) {
           {"g_error_per_row", c.g_error_per_row},
           {"g_avg_error_rows", c.g_avg_error_rows},
           {"g_avg_error_per_row", c.g_avg_error_per_row}};
+}
+}  // namespace
+
+nlohmann::json to_json(const Config& c) {
+  nlohmann::json j = to_json_grids(c);
+  if (!c.materials.empty()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const Material& m : c.materials) {
+      nlohmann::json e = {{"name", m.name}, {"ndf", m.ndf}, {m.ndf == "gbeckmann" ? "beta" : "alpha", m.roughness}};
+      if (m.ndf == "gbeckmann") e["p"] = m.p;
+      list.push_back(e);
+    }
+    j["materials"] = list;
+    j["material_mu_points"] = c.material_mu_points;
+  }
+  return j;
 }
 
 namespace {
@@ -207,8 +267,42 @@ int mu_points(double lo, double hi, double step) {
   return points_for_step(transformed_span(sc::kMu.transform, lo, hi), step);
 }
 
-BuiltTable finish(TableSpec spec, const RowFunction& row, const GenerateContext& ctx) {
+// Declared single-core cost per exact E (dry runs, scene cost model: reproducible
+// decisions): GGX and Beckmann 0.2-20 ms, ~3 ms typical; generalized Beckmann 20-80 ms. One
+// E_avg ~ 130 E. Values are shared through AlbedoCache: the first of the four quantities'
+// tables pays (and the precise before the compact), the others cost nothing.
+constexpr double kValueSeconds = 3e-3, kGValueSeconds = 50e-3, kAvgPerValue = 130;
+
+// Targeted error points: where random points rarely land and the tables are worst, the
+// smallest roughness (one-sided stencils at the range's edge) with mu a few times the
+// roughness (the grazing transition, whose width in mu scales with the roughness while the
+// mu axis does not: measured 1.6e-5 there for the compact Beckmann table where 1152 random
+// points found 1.1e-5). Roughness r_lo * {1.01, 1.07, 1.2, 1.5, 2}, mu = r * {1, 1.5, 2, 2.5,
+// 3, 4}, inside the ranges; `outer` holds leading coordinates (p for the 3-D tables).
+constexpr const char* kTargetedText = "roughness r = r_lo * {1.01, 1.07, 1.2, 1.5, 2}, mu = r * {1, 1.5, 2, 2.5, 3, 4}";
+std::vector<std::vector<double>> targeted_grazing(double r_lo, double r_hi, double mu_lo, double mu_hi,
+                                                  const std::vector<double>& outer) {
+  std::vector<std::vector<double>> pts;
+  for (double fr : {1.01, 1.07, 1.2, 1.5, 2.0}) {
+    const double r = r_lo * fr;
+    if (r > r_hi) continue;
+    for (double fm : {1.0, 1.5, 2.0, 2.5, 3.0, 4.0}) {
+      const double mu = r * fm;
+      if (!(mu >= mu_lo && mu <= mu_hi)) continue;
+      std::vector<double> pt = outer;
+      pt.push_back(r);
+      pt.push_back(mu);
+      pts.push_back(std::move(pt));
+    }
+  }
+  return pts;
+}
+
+BuiltTable finish(TableSpec spec, const RowFunction& row, const GenerateContext& ctx, double value_seconds,
+                  double row_seconds = 0) {
   spec.generator = "microfacet_albedo";
+  spec.cost_row_seconds = row_seconds;
+  spec.cost_value_seconds = value_seconds;
   spec.interpolation = lookup::Interpolation::cubic;
   // split_bias falls to ~1e-7 at normal incidence and small alpha: relative error only
   // where the value exceeds 1e-3 (absolute error everywhere).
@@ -239,11 +333,13 @@ void build_ndf(const Config& c, int ndf, const GenerateContext& ctx, std::vector
       spec.method = kMethodE;
       spec.error_rows = c.error_rows;
       spec.error_per_row = c.error_per_row;
+      spec.targeted_points = targeted_grazing(c.alpha_lo, c.alpha_hi, c.mu_lo, c.mu_hi, {});
+      spec.targeted_text = kTargetedText;
       const RowFunction row = [&cache, q](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
         const std::vector<MicrofacetAlbedo> e = cache.row(outer[0], 1.0, mus);
         for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
       };
-      tables.push_back(finish(std::move(spec), row, ctx));
+      tables.push_back(finish(std::move(spec), row, ctx, q == 0 && (precise || !c.precise) ? kValueSeconds : 0.0));
     }
   }
   // E_avg(alpha): 1-D, float64 (a few hundred bytes: compact and precise at once).
@@ -261,7 +357,7 @@ void build_ndf(const Config& c, int ndf, const GenerateContext& ctx, std::vector
       const MicrofacetAlbedoAvg a = cache.avg(alpha, 1.0);
       return q == 0 ? a.eavg_corr : a.eavg_sep;
     });
-    tables.push_back(finish(std::move(spec), row, ctx));
+    tables.push_back(finish(std::move(spec), row, ctx, kValueSeconds * kAvgPerValue));
   }
 }
 
@@ -283,11 +379,13 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
     spec.method = kMethodE;
     spec.error_rows = c.g_error_rows;
     spec.error_per_row = c.g_error_per_row;
+    spec.targeted_points = targeted_grazing(c.beta_lo, c.beta_hi, c.mu_lo, c.mu_hi, {std::sqrt(c.p_lo * c.p_hi)});
+    spec.targeted_text = kTargetedText;
     const RowFunction row = [&cache, q](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
       const std::vector<MicrofacetAlbedo> e = cache.row(outer[1], outer[0], mus);
       for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
     };
-    tables.push_back(finish(std::move(spec), row, ctx));
+    tables.push_back(finish(std::move(spec), row, ctx, q == 0 ? kGValueSeconds : 0.0));
   }
   // Per material: the same (beta, mu) nodes at a fixed p (cache hits where p is a p node).
   for (double p : c.material_p) {
@@ -302,11 +400,13 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
       spec.method = kMethodE;
       spec.error_rows = c.g_error_rows;
       spec.error_per_row = c.g_error_per_row;
+      spec.targeted_points = targeted_grazing(c.beta_lo, c.beta_hi, c.mu_lo, c.mu_hi, {});
+      spec.targeted_text = kTargetedText;
       const RowFunction row = [&cache, q, p](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
         const std::vector<MicrofacetAlbedo> e = cache.row(outer[0], p, mus);
         for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
       };
-      tables.push_back(finish(std::move(spec), row, ctx));
+      tables.push_back(finish(std::move(spec), row, ctx, q == 0 ? kGValueSeconds : 0.0));
     }
   }
   for (int q = 0; q < 2; ++q) {
@@ -326,7 +426,67 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
         out[j] = q == 0 ? a.eavg_corr : a.eavg_sep;
       }
     };
-    tables.push_back(finish(std::move(spec), row, ctx));
+    tables.push_back(finish(std::move(spec), row, ctx, kGValueSeconds * kAvgPerValue));
+  }
+}
+
+// Scene materials: the four quantities of one material on mu (1-D, float64), from one
+// AlbedoCache per material (the four tables and their error samples share every E).
+void build_materials(const Config& c, const GenerateContext& ctx, std::vector<BuiltTable>& tables) {
+  for (const Material& m : c.materials) {
+    const NdfKind kind = m.ndf == "ggx" ? NdfKind::ggx : m.ndf == "beckmann" ? NdfKind::beckmann : NdfKind::gbeckmann;
+    auto cache = std::make_shared<AlbedoCache>(kind);
+    // E_avg of the material (exact, numerics::microfacet_albedo_avg's nodes and weights, the
+    // node values spread over threads): attributes Eavg_corr, Eavg_sep of its E_corr table.
+    numerics::MicrofacetAlbedoAvg avg{};
+    if (!ctx.dry_run) {
+      std::vector<double> w;
+      std::vector<double> mus = numerics::microfacet_albedo_avg_nodes(m.roughness, &w);
+      mus.push_back(numerics::kAlbedoMuMin);
+      std::vector<double> e_corr(mus.size());
+      const RowFunction corr = pointwise_parallel_row(
+          [&](double mu) { return cache->row(m.roughness, m.p, std::span<const double>(&mu, 1))[0].e_corr; });
+      corr(std::span<const double>(), mus, e_corr);
+      std::vector<MicrofacetAlbedo> e = cache->row(m.roughness, m.p, mus);  // all cached now
+      const MicrofacetAlbedo e_min = e.back();
+      e.pop_back();
+      mus.pop_back();
+      avg = numerics::microfacet_albedo_avg_from_nodes(mus, w, e, e_min);
+    }
+    const std::string rough = (m.ndf == "gbeckmann" ? "beta = " : "alpha = ") + lookup::format_number(m.roughness) +
+                              (m.ndf == "gbeckmann" ? ", p = " + lookup::format_number(m.p) : std::string());
+    for (int q = 0; q < 4; ++q) {
+      TableSpec spec;
+      spec.dataset = sc::scene_material_dataset(m.name, q);
+      spec.quantity = std::string(sc::kSceneMaterial.quantity) + std::string(sc::kQuantities[static_cast<std::size_t>(q)]) +
+                      " of material '" + m.name + "' (" + m.ndf + ", " + rough + ")";
+      spec.axes = {axis_spec(sc::kMu, c.mu_lo, c.mu_hi, c.material_mu_points)};
+      spec.storage = lookup::Storage::float64;
+      spec.domain = "mu in " + range_text(c.mu_lo, c.mu_hi) + " (" + m.ndf + ", " + rough + ")";
+      spec.method = kMethodE;
+      spec.error_rows = 1;
+      spec.error_per_row = 64;
+      spec.cost_class = "material_" + m.ndf;
+      // Targeted: grazing, where E changes on the scale mu ~ roughness.
+      for (double mu : {2e-6, 1e-5, 1e-4, 1e-3, 3e-3, 1e-2, 3e-2, 0.1, 0.3, 0.97, 0.995})
+        if (mu >= c.mu_lo && mu <= c.mu_hi) spec.targeted_points.push_back({mu});
+      spec.targeted_text = "mu = 2e-6 ... 0.995";
+      const double rough_v = m.roughness, p = m.p;
+      const RowFunction row = [cache, q, rough_v, p](std::span<const double>, std::span<const double> mus, std::span<double> out) {
+        const std::vector<MicrofacetAlbedo> e = cache->row(rough_v, p, mus);
+        for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
+      };
+      // The E_avg (~130 E) is paid by the E_corr table: half per row (its row and its error row).
+      const double vs = q > 0 ? 0.0 : kind == NdfKind::gbeckmann ? kGValueSeconds : kValueSeconds;
+      BuiltTable t = finish(std::move(spec), row, ctx, vs, 0.5 * kAvgPerValue * vs);
+      t.dataset.attributes["material"] = m.name;
+      if (kind == NdfKind::gbeckmann) t.dataset.attributes["p"] = m.p;
+      if (q == 0) {
+        t.dataset.attributes["Eavg_corr"] = avg.eavg_corr;
+        t.dataset.attributes["Eavg_sep"] = avg.eavg_sep;
+      }
+      tables.push_back(std::move(t));
+    }
   }
 }
 
@@ -334,6 +494,7 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
 
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
   std::vector<BuiltTable> tables;
+  if (!c.materials.empty()) build_materials(c, ctx, tables);
   if (c.ggx && (c.compact || c.precise)) build_ndf(c, 0, ctx, tables);
   if (c.beckmann && (c.compact || c.precise)) build_ndf(c, 1, ctx, tables);
   if (c.gbeckmann) build_gbeckmann(c, ctx, tables);

@@ -2,6 +2,8 @@
 // Table family microfacet_albedo: directional albedo E(mu) (F = 1), the split-sum pair and
 // the hemispherical average E_avg of GGX, Beckmann and generalized Beckmann microfacet BRDFs
 // (see microfacet_albedo.cpp; schema in lookup/microfacet_albedo_schema.hpp).
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -18,6 +20,14 @@ inline constexpr const char* kSummary =
 // generation budget (about a minute on 2 cores), README and the report give the measured errors. The precise grid is the compact
 // one refined precise_refine times in each axis, so every compact node is a precise node and
 // its exact values are computed once (generators/microfacet_albedo.cpp, AlbedoCache).
+// A scene material: one NDF at one roughness (alpha, or beta with kurtosis p).
+struct Material {
+  std::string name;
+  std::string ndf;  // "ggx", "beckmann" or "gbeckmann"
+  double roughness = 0.1;
+  double p = 1.0;  // gbeckmann only
+};
+
 struct Config {
   // GGX and Beckmann on (alpha, mu).
   double alpha_lo = 0.01, alpha_hi = 1, mu_lo = 1e-6, mu_hi = 1;
@@ -37,6 +47,10 @@ struct Config {
   int error_rows = 48, error_per_row = 24;
   int avg_error_points = 16;
   int g_error_rows = 16, g_error_per_row = 8, g_avg_error_rows = 2, g_avg_error_per_row = 1;
+  // Non-empty: one 1-D table per material and quantity on mu at its roughness (scenes;
+  // microfacet_albedo_scene.cpp), material_mu_points points on mu^(1/4), float64 cubic.
+  std::vector<Material> materials;
+  int material_mu_points = 321;
 };
 
 Config read_config(const nlohmann::json& entry);
@@ -44,5 +58,11 @@ nlohmann::json to_json(const Config& c);
 std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx);
 Config test_config();
 Config narrowed(Config c);
+
+// Scene hook (generators/microfacet_albedo_scene.cpp): materials with a GGX, Beckmann or
+// generalized Beckmann lobe ("ggx", "beckmann": alpha; "generalized_beckmann": p,
+// beta) get four 1-D tables each (E_corr, E_sep, split pair on mu; exact E_avg as attributes
+// of the E_corr slice), or share the generic grids. "ghs" materials are not served.
+std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);
 
 }  // namespace brdftab::gen::microfacet_albedo

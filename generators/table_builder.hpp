@@ -72,6 +72,11 @@ struct TableSpec {
   int error_rows = 256;
   int error_per_row = 64;
   unsigned seed = 12345;
+  // Targeted error points (physical coordinates, one value per axis), measured in addition
+  // to the random ones: where the family knows the table is hardest (a kink, an edge) and
+  // random points rarely land. targeted_text says where they are (error_sampling attribute).
+  std::vector<std::vector<double>> targeted_points;
+  std::string targeted_text;
   // Relative error uses |exact| in the denominator; points with |exact| <= rel_floor
   // count only for the absolute error.
   double rel_floor = 0.0;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "numerics/fresnel_avg_conductor.hpp"
 #include "numerics/fresnel_dr.hpp"
@@ -102,4 +103,52 @@ TEST_CASE("fresnel_avg_conductor: two quadratures agree to 1e-14, k = 0 is F_dr,
   CHECK_THROWS_AS(fresnel_avg_conductor(0.0, 0.0), std::domain_error);
   CHECK_THROWS_AS(fresnel_dr(0.0), std::domain_error);
   CHECK_THROWS_AS(fresnel_dr(NAN), std::domain_error);
+}
+
+TEST_CASE("fresnel_avg_conductor: stress near the cone n = 1, k -> 0, the smoothed critical angle, large n and k") {
+  // For n < 1 and tiny k > 0 the total-internal-reflection edge survives at
+  // mu_c^2 = 1 - n^2 + k^2 with width ~ n k / mu_c (graded knots there), and at n ~ 1 the
+  // panels hold ~1e-5: before the local panel coordinate and the absolute floor, values here
+  // took 0.3-0.5 s and were off by up to 6e-12 (n = 0.5, k = 1e-8).
+  // Independent check 1, k -> 0: F_avg(n, k) = F_dr(n) + s(n) k + O(k^2) against the F_dr
+  // closed form (no shared code): |F_avg - F_dr| <= 10 k (|s| <= 6.3 measured), and the slope
+  // s is the same at k = 1e-12 and 1e-10 (linear regime; 1e-4 of rounding at 1e-12).
+  for (double n : {0.05, 0.5, 0.99, 0.9999, 1.0 - 1e-7, 1.0, 1.0 + 1e-7, 1.0001, 1.01, 1e3, 1e4}) {
+    CAPTURE(n);
+    const double dr = fresnel_dr(n);
+    for (double k : {1e-12, 1e-10, 1e-8}) {
+      const double a = fresnel_avg_conductor(n, k);
+      CAPTURE(k);
+      CHECK(std::isfinite(a));
+      CHECK(a >= 0.0);
+      CHECK(a <= 1.0);
+      CHECK(std::abs(a - dr) <= 10 * k);
+    }
+    if (n < 0.9999) {
+      const double s12 = (fresnel_avg_conductor(n, 1e-12) - dr) / 1e-12;
+      const double s10 = (fresnel_avg_conductor(n, 1e-10) - dr) / 1e-10;
+      CHECK(std::abs(s12 - s10) <= 1e-3 * std::abs(s10) + 1e-3);
+    }
+  }
+  // Independent check 2: the theta-form quadrature (no shared knots) where it is reliable and
+  // quick: edge width n k / mu_c >= ~1e-6 (it has no cut at the smoothed critical angle for
+  // k > 0: at n = 0.05, k = 1e-6, width 5e-8, it is off by 2e-13).
+  for (const auto& [n, k] : {std::pair{0.05, 1e-4}, std::pair{0.5, 1e-4}, std::pair{0.99, 1e-4}, std::pair{0.5, 1e-6},
+                             std::pair{0.99, 1e-6}}) {
+    CAPTURE(n);
+    CAPTURE(k);
+    CHECK(std::abs(fresnel_avg_conductor(n, k) - fresnel_avg_conductor_theta(n, k)) < 1e-13);
+  }
+  // Large index: finite, in [0, 1], k = 0 is F_dr; large k approaches 1.
+  for (double n : {1e3, 1e4}) CHECK(std::abs(fresnel_avg_conductor(n, 0.0) - fresnel_dr(n)) < 1e-14);
+  for (double n : {0.05, 1.0, 1e4}) {
+    const double a = fresnel_avg_conductor(n, 1e4);
+    CHECK(a <= 1.0);
+    CHECK(a > 0.999);
+  }
+  // The cone: F_avg(1 + d) = d / 3 + o(d) above and 7 |d| / 3 + o(d) below (F_dr(1 + d) ~ d/3
+  // and the reciprocity 1 - F_dr(1 - d) = (1 - d)^2 (1 - F_dr(1 / (1 - d)))): the slope jump
+  // 8/3 that a table through n = 1 cannot follow (lookup/fresnel_schema.hpp).
+  CHECK(std::abs(fresnel_avg_conductor(1.0 + 1e-6, 0.0) / 1e-6 - 1.0 / 3.0) < 1e-2);
+  CHECK(std::abs(fresnel_avg_conductor(1.0 - 1e-6, 0.0) / 1e-6 - 7.0 / 3.0) < 1e-2);
 }

@@ -87,9 +87,10 @@ void register_benchmarks(const BenchContext& ctx) {
   } catch (const std::exception&) {
   }
   try {
-    auto avg = std::make_shared<lookup::LoadedTable>(lookup::load_table(file, std::string(sc::kAvgConductor.name)));
-    benchmark::RegisterBenchmark("fresnel/table/fresnel_avg_conductor", [nk, avg](benchmark::State& state) {
-      const lookup::FresnelAvgConductorTable t(avg->table);
+    auto above = std::make_shared<lookup::LoadedTable>(lookup::load_table(file, std::string(sc::kAvgConductorAbove.name)));
+    auto below = std::make_shared<lookup::LoadedTable>(lookup::load_table(file, std::string(sc::kAvgConductorBelow.name)));
+    benchmark::RegisterBenchmark("fresnel/table/fresnel_avg_conductor", [nk, above, below](benchmark::State& state) {
+      const lookup::FresnelAvgConductorTable t(&above->table, &below->table);
       for (auto _ : state)
         for (std::size_t i = 0; i < nk->size(); i += 2)
           benchmark::DoNotOptimize(lookup::fresnel_avg_conductor(t, (*nk)[i], (*nk)[i + 1]));

@@ -98,7 +98,19 @@ std::vector<Quantity> quantities() {
       out[0] = numerics::fresnel_avg_conductor(in[0], in[1]);
     };
     q.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
-      out[0] = table(ctx, schema::fresnel::kAvgConductor).eval2(in[0], in[1], lookup::OutOfDomain::error);
+      // Each side of n = 1 is optional (a narrowed manifest may build one only).
+      const auto side = [&](const schema::DatasetSchema& d) -> const lookup::Table* {
+        try {
+          return &table(ctx, d);
+        } catch (const std::exception&) {
+          return nullptr;
+        }
+      };
+      const lookup::Table* above = side(schema::fresnel::kAvgConductorAbove);
+      const lookup::Table* below = side(schema::fresnel::kAvgConductorBelow);
+      if (!above && !below) (void)table(ctx, schema::fresnel::kAvgConductorAbove);  // throws naming the table
+      const lookup::FresnelAvgConductorTable t(above, below);
+      out[0] = lookup::fresnel_avg_conductor(t, in[0], in[1], lookup::OutOfDomain::error);
     };
     qs.push_back(std::move(q));
   }

@@ -8,6 +8,7 @@
 //   microfacet_albedo_<ndf>_<q>_{compact,precise}  ndf in {ggx, beckmann}: on (alpha, mu)
 //   microfacet_albedo_gbeckmann_<q>_compact        generalized Beckmann: on (p, beta, mu)
 //   microfacet_albedo_gbeckmann_material_p<p>_<q>  the same at one kurtosis p: on (beta, mu)
+//   microfacet_albedo_material_<name>_<q>          one scene material at its roughness: on mu
 // and per average qa of {Eavg_corr, Eavg_sep}:
 //   microfacet_albedo_avg_<ndf>_<qa>               on alpha;  _avg_gbeckmann_<qa> on (p, beta).
 // compact: float32 (<= 32 KB per quantity); precise: float64. All cubic.
@@ -95,13 +96,23 @@ inline constexpr std::array kGBeckmannAvg{
 #undef BRDFTAB_MFA_NDF
 #undef BRDFTAB_MFA_G3
 
+// Per scene material (generators/microfacet_albedo_scene.cpp): quantity q of one material's
+// lobe at its roughness, on mu: microfacet_albedo_material_<name>_<q>.
+inline constexpr DatasetSchema kSceneMaterial{
+    "microfacet_albedo_material_", true,
+    "directional albedo quantity of one scene material's microfacet BRDF (F = 1) at its roughness, on mu: ", 1, {kMu}};
+inline std::string scene_material_dataset(const std::string& material, int quantity) {
+  return std::string(kSceneMaterial.name) + material + "_" + std::string(kQuantities[static_cast<std::size_t>(quantity)]);
+}
+
 inline constexpr std::array kDatasets = [] {
-  std::array<DatasetSchema, kNdfDatasets.size() + kGBeckmann3d.size() + 1 + kGBeckmannAvg.size()> a{};
+  std::array<DatasetSchema, kNdfDatasets.size() + kGBeckmann3d.size() + 1 + kGBeckmannAvg.size() + 1> a{};
   std::size_t i = 0;
   for (const auto& d : kNdfDatasets) a[i++] = d;
   for (const auto& d : kGBeckmann3d) a[i++] = d;
   a[i++] = kGBeckmannMaterial;
   for (const auto& d : kGBeckmannAvg) a[i++] = d;
+  a[i++] = kSceneMaterial;
   return a;
 }();
 

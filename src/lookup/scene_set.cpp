@@ -117,6 +117,11 @@ struct SceneMaterialHandle::Impl {
   bool h_slice[3] = {false, false, false};
   std::optional<FresnelDrTable> dr;
   std::optional<FresnelAvgConductorTable> avg;
+  const Table* avg_above = nullptr;  // the two sides of n = 1, combined into avg after loading
+  const Table* avg_below = nullptr;
+  const Table* mf[4] = {nullptr, nullptr, nullptr, nullptr};  // E_corr, E_sep, split_scale, split_bias
+  const Table* mf_avg[2] = {nullptr, nullptr};                // Eavg_corr, Eavg_sep (grid form)
+  double eavg[2] = {NAN, NAN};                                 // slices: attributes of the E_corr slice
   double c = NAN, kd_value = NAN;
   std::map<std::string, const LoadedTable*> composite;  // role -> per-material table
 };
@@ -182,8 +187,27 @@ SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tab
         if (m.h_slice[k] && std::isnan(m.c)) m.c = t.info.attribute_number("ls_c", NAN);
       } else if (role == "F_dr") {
         m.dr.emplace(t.table);
-      } else if (role == "F_avg") {
-        m.avg.emplace(t.table);
+      } else if (role == "E_corr" || role == "E_sep" || role == "split_scale" || role == "split_bias") {
+        namespace mf = schema::microfacet_albedo;
+        const std::size_t q = role == "E_corr" ? 0 : role == "E_sep" ? 1 : role == "split_scale" ? 2 : 3;
+        if (mf::kSceneMaterial.matches(ds)) {
+          schema::check_table(t.table, mf::kSceneMaterial);
+          if (q == 0) {
+            m.eavg[0] = t.info.attribute_number("Eavg_corr", NAN);
+            m.eavg[1] = t.info.attribute_number("Eavg_sep", NAN);
+          }
+        } else if (t.table.rank() == 3) {
+          schema::check_table(t.table, mf::kGBeckmann3d[q]);
+        } else {
+          detail::check_last_axis_mu(t.table);
+        }
+        m.mf[q] = &t.table;
+      } else if (role == "Eavg_corr" || role == "Eavg_sep") {
+        m.mf_avg[role == "Eavg_corr" ? 0 : 1] = &t.table;
+      } else if (role == "F_avg_n_above_1") {
+        m.avg_above = &t.table;
+      } else if (role == "F_avg_n_below_1") {
+        m.avg_below = &t.table;
       } else if (const schema::DatasetSchema* d = composite_role_schema(role)) {
         if (!d->matches(ds)) throw TableFileError("role '" + role + "': dataset '" + ds + "' is not a " + std::string(d->name) + "... table");
         schema::check_table(t.table, t.info.attribute_string("quantity"), *d);
@@ -192,6 +216,7 @@ SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tab
         throw TableFileError("unknown role (this library is older than the scene index?)");
       }
     }
+    if (m.avg_above || m.avg_below) m.avg.emplace(m.avg_above, m.avg_below);
   } catch (const TableFileError& ex) {
     throw TableFileError("scene material '" + e_.name + "': " + ex.what());
   } catch (const std::exception& ex) {
@@ -277,6 +302,40 @@ const Table& SceneMaterialHandle::table(const std::string& role) const {
   const auto it = impl_->composite.find(role);
   if (it == impl_->composite.end()) missing(e_, role);
   return it->second->table;
+}
+
+}  // namespace brdftab::lookup
+
+namespace brdftab::lookup {
+
+MicrofacetAlbedoValues SceneMaterialHandle::microfacet_albedo(double mu) const {
+  const Impl& m = *impl_;
+  double v[4];
+  for (int q = 0; q < 4; ++q) {
+    const Table* t = m.mf[q];
+    if (!t) missing(e_, std::string(schema::microfacet_albedo::kQuantities[static_cast<std::size_t>(q)]));
+    if (t->rank() == 1) {
+      v[q] = t->eval1(mu);
+    } else if (t->rank() == 2) {
+      v[q] = t->eval2(param("alpha"), mu);
+    } else {
+      const double x[3] = {param("p"), param("beta"), mu};
+      v[q] = t->eval(x);
+    }
+  }
+  return {v[0], v[1], v[2], v[3]};
+}
+
+MicrofacetAlbedoAvgValues SceneMaterialHandle::microfacet_albedo_avg() const {
+  const Impl& m = *impl_;
+  if (!std::isnan(m.eavg[0]) && !std::isnan(m.eavg[1])) return {m.eavg[0], m.eavg[1]};
+  double v[2];
+  for (int q = 0; q < 2; ++q) {
+    const Table* t = m.mf_avg[q];
+    if (!t) missing(e_, std::string(schema::microfacet_albedo::kAvgQuantities[static_cast<std::size_t>(q)]));
+    v[q] = t->rank() == 1 ? t->eval1(param("alpha")) : t->eval2(param("p"), param("beta"));
+  }
+  return {v[0], v[1]};
 }
 
 }  // namespace brdftab::lookup

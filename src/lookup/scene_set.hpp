@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "lookup/microfacet_albedo.hpp"
 #include "lookup/table_set.hpp"
 
 namespace brdftab::lookup {
@@ -83,6 +84,11 @@ class SceneMaterialHandle {
   // filip "filip_brdf", "filip_albedo", "filip_marginal_cdf", "filip_conditional_cdf".
   // Evaluate them with the family's lookup helpers (lookup/hazy_gloss.hpp, hp.hpp, filip.hpp).
   const Table& table(const std::string& role) const;
+  // Microfacet lobe with F = 1 (ggx, beckmann: alpha; generalized_beckmann: p, beta):
+  // E_corr, E_sep and the split-sum pair at mu, from the material's 1-D slices or the grids;
+  // E_avg from the index's exact scalars or the grids' E_avg tables.
+  MicrofacetAlbedoValues microfacet_albedo(double mu) const;
+  MicrofacetAlbedoAvgValues microfacet_albedo_avg() const;
 
  private:
   struct Impl;

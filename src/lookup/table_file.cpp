@@ -213,6 +213,9 @@ constexpr AttributeRule kDatasetRules[] = {
     // albedo c and spherical albedo k_d (named ls_* apart from ghs's c >= 1)
     {"p", Kind::number, 0, 1e3, true},
     {"ls_c", Kind::number, 0, 1, false},
+    // microfacet_albedo scene slices: the material's exact E_avg (attributes of its E_corr slice)
+    {"Eavg_corr", Kind::number, 0, 1, false},
+    {"Eavg_sep", Kind::number, 0, 1, false},
     {"ls_kd", Kind::number, 0, 1, false},
 };
 constexpr AttributeRule kFileRules[] = {
