@@ -17,7 +17,7 @@
 
 namespace brdftab::gen {
 
-inline constexpr const char* kGeneratorVersion = "1";
+inline constexpr const char* kGeneratorVersion = "2";
 
 std::string content_key(const std::string& what, const nlohmann::json& normalized_entry);
 
