@@ -22,13 +22,6 @@ using validate::pareto::Point;
 
 namespace {
 
-fs::path scratch(const std::string& name) {  // per run: the process id
-  const fs::path d = fs::path(BRDFTAB_TEST_TMP) / (name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
 Point row(const std::string& variant, double ns, std::optional<double> err) {
   return Point{"table", variant, "float64", "cubic", 100, ns, err, "test"};
 }
@@ -53,7 +46,7 @@ TEST_CASE("pareto front: dominated rows, ties and reference rows") {
 }
 
 TEST_CASE("pareto files: CSV rows with the front marked, a gnuplot script that gnuplot accepts") {
-  const fs::path dir = scratch("pareto_files");
+  const fs::path dir = brdftab::testing::scratch_dir("pareto_files");
   validate::pareto::Quantity q{"demo", "demo quantity", "max relative error", 16, {}};
   q.rows = {row("8x8", 10, 1e-3), row("16x16", 12, 1e-5), row("big, slow", 20, 1e-4), row("ref", 900, std::nullopt)};
   q.rows[3].method = "exact";

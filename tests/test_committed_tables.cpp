@@ -15,16 +15,10 @@
 #include "generators/family.hpp"
 #include "generators/manifest.hpp"
 #include "lookup/table_file.hpp"
+#include "cli_runner.hpp"
 
 namespace fs = std::filesystem;
 using namespace brdftab;
-
-namespace {
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-}  // namespace
 
 TEST_CASE("committed default tables match a fresh generation within their stated error") {
   const fs::path committed = fs::path(BRDFTAB_SOURCE_DIR) / "tables";
@@ -66,7 +60,7 @@ TEST_CASE("committed default tables match a fresh generation within their stated
     }
     // Reproducible output (issue 13): the fresh file is the committed one, byte for byte.
     const std::string file = family->file();
-    CHECK_MESSAGE(slurp(committed / file) == slurp(fresh / file),
+    CHECK_MESSAGE(brdftab::testing::slurp(committed / file) == brdftab::testing::slurp(fresh / file),
                   file << " differs from a fresh generation: run scripts/run.sh and commit tables/");
   }
 }

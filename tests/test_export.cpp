@@ -20,27 +20,12 @@
 namespace fs = std::filesystem;
 using brdftab::testing::run_cli;
 
-namespace {
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::path(BRDFTAB_TEST_TMP) / (name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-}  // namespace
-
 TEST_CASE("export --format header compiles and holds the table's values and axes exactly") {
   const fs::path tables = fs::path(BRDFTAB_SOURCE_DIR) / "tables";
   for (const auto& [file, name] : {std::pair<std::string, std::string>{"demo.h5", "demo_exp_cos"},
                                    {"smith_gbeckmann.h5", "smith_gbeckmann_g1_compact"}}) {
     INFO(name);
-    const fs::path dir = scratch("export_header");
+    const fs::path dir = brdftab::testing::scratch_dir("export_header");
     const auto r = run_cli("export '" + (tables / file).string() + "' " + name + " --format header --out '" +
                            dir.string() + "'");
     REQUIRE(r.status == 0);
@@ -57,7 +42,7 @@ TEST_CASE("export --format header compiles and holds the table's values and axes
                             (dir / "main.cpp").string() + "' && '" + (dir / "prog").string() + "' > '" +
                             (dir / "out.txt").string() + "'";
     REQUIRE(std::system(cmd.c_str()) == 0);
-    std::istringstream out(slurp(dir / "out.txt"));
+    std::istringstream out(brdftab::testing::slurp(dir / "out.txt"));
     const auto lt = brdftab::lookup::load_table(tables / file, name);
     const auto& t = lt.table;
     int rank = 0;

@@ -24,17 +24,8 @@ using namespace brdftab;
 using brdftab::testing::run_cli;
 namespace fs = std::filesystem;
 
-namespace {
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::path(BRDFTAB_TEST_TMP) / (name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-}  // namespace
-
 TEST_CASE("microfacet_albedo scene: slices per material, off-grid values and E_avg agree with the exact numerics") {
-  const fs::path d = scratch("mfa_scene");
+  const fs::path d = brdftab::testing::scratch_dir("mfa_scene");
   std::ofstream(d / "scene.json") << R"({"schema_version": 1, "materials": [
     {"name": "steel", "model": "ggx", "alpha": 0.3, "n": 2.5, "k": 3.0},
     {"name": "satin", "model": "beckmann", "alpha": 0.5}]})";

@@ -24,18 +24,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::path(BRDFTAB_TEST_TMP) / (name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 // Two GHS materials (slices of smith_gbeckmann and ghs_sigma_rel, F_dr scalars) and one
 // conductor GGX lobe (F_avg scalar, microfacet_albedo slices): cheap to generate (~3 s).
 const char* kScene = R"({"schema_version": 1, "materials": [
@@ -46,7 +34,7 @@ const char* kScene = R"({"schema_version": 1, "materials": [
 }  // namespace
 
 TEST_CASE("generate --scene: the tables the scene needs, incremental, check, byte-identical") {
-  const fs::path d = scratch("scene_gen");
+  const fs::path d = brdftab::testing::scratch_dir("scene_gen");
   std::ofstream(d / "scene.json") << kScene;
   const std::string out1 = (d / "out1").string(), out2 = (d / "out2").string();
   auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + out1 + "'");
@@ -66,7 +54,7 @@ TEST_CASE("generate --scene: the tables the scene needs, incremental, check, byt
 
   // second generate: no table work, files untouched
   const auto t_before = fs::last_write_time(fs::path(out1) / "ghs_sigma_rel.h5");
-  const std::string bytes_before = slurp(fs::path(out1) / "ghs_sigma_rel.h5");
+  const std::string bytes_before = brdftab::testing::slurp(fs::path(out1) / "ghs_sigma_rel.h5");
   r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + out1 + "'");
   REQUIRE(r.status == 0);
   CHECK(contains(r.out, "0 tables in"));
@@ -78,9 +66,9 @@ TEST_CASE("generate --scene: the tables the scene needs, incremental, check, byt
   REQUIRE(r.status == 0);
   for (const char* f : {"ghs_sigma_rel.h5", "smith_gbeckmann.h5", "microfacet_albedo.h5", "scene.index"}) {
     INFO(f);
-    CHECK(slurp(fs::path(out1) / f) == slurp(fs::path(out2) / f));
+    CHECK(brdftab::testing::slurp(fs::path(out1) / f) == brdftab::testing::slurp(fs::path(out2) / f));
   }
-  CHECK(slurp(fs::path(out1) / "ghs_sigma_rel.h5") == bytes_before);
+  CHECK(brdftab::testing::slurp(fs::path(out1) / "ghs_sigma_rel.h5") == bytes_before);
 
   // a changed material: that family's file is stale, check says so and exits 1
   std::string changed = kScene;
@@ -108,7 +96,7 @@ TEST_CASE("generate --scene: the tables the scene needs, incremental, check, byt
 }
 
 TEST_CASE("generate --scene: bad input exits 2 and writes nothing") {
-  const fs::path d = scratch("scene_bad");
+  const fs::path d = brdftab::testing::scratch_dir("scene_bad");
   std::ofstream(d / "bad.json") << R"({"materials": [{"name": "gold", "model": "ghs", "p": 1, "beta": 0.2, "B": -3, "c": 2}]})";
   auto r = run_cli("generate -q --scene '" + (d / "bad.json").string() + "' --out '" + (d / "out").string() + "'");
   CHECK(r.status == 2);
@@ -131,16 +119,16 @@ TEST_CASE("generate --scene: bad input exits 2 and writes nothing") {
 }
 
 TEST_CASE("generate --manifest: content keys make a second run skip, byte-identical on rebuild") {
-  const fs::path d = scratch("manifest_incr");
+  const fs::path d = brdftab::testing::scratch_dir("manifest_incr");
   std::ofstream(d / "m.json") << R"({"tables": {"demo": {"x_points": 9, "y_step": 0.2}}})";
   const std::string args = "generate -q --manifest '" + (d / "m.json").string() + "' --out '" + (d / "out").string() + "'";
   REQUIRE(run_cli(args).status == 0);
-  const std::string first = slurp(d / "out" / "demo.h5");
+  const std::string first = brdftab::testing::slurp(d / "out" / "demo.h5");
   auto r = run_cli(args);
   CHECK(contains(r.out, "skipped: demo.h5"));
   r = run_cli(args + " --rebuild");
   CHECK(contains(r.out, "1 tables in"));
-  CHECK(slurp(d / "out" / "demo.h5") == first);  // no timestamps, same error points
+  CHECK(brdftab::testing::slurp(d / "out" / "demo.h5") == first);  // no timestamps, same error points
   const auto attrs = lookup::file_attributes(d / "out" / "demo.h5");
   CHECK(attrs.count("content_key") == 1);
   CHECK(attrs.count("created_utc") == 0);  // only with SOURCE_DATE_EPOCH
@@ -150,7 +138,7 @@ TEST_CASE("generate --manifest: content keys make a second run skip, byte-identi
 }
 
 TEST_CASE("SceneSet: lazy, one handle per material, values agree with the exact numerics") {
-  const fs::path d = scratch("scene_runtime");
+  const fs::path d = brdftab::testing::scratch_dir("scene_runtime");
   std::ofstream(d / "scene.json") << kScene;
   REQUIRE(run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + (d / "out").string() + "'").status == 0);
   lookup::SceneSet scene(d / "out");
@@ -179,7 +167,7 @@ TEST_CASE("SceneSet: lazy, one handle per material, values agree with the exact 
 }
 
 TEST_CASE("SceneSet: an LS material's slices satisfy k_d = 2 int A mu dmu and match the default H grid") {
-  const fs::path d = scratch("scene_ls");
+  const fs::path d = brdftab::testing::scratch_dir("scene_ls");
   std::ofstream(d / "scene.json") << R"({"materials": [{"name": "milk", "model": "ls", "c": 0.9}],
                                          "families": {"ls": {"form": "slices"}, "hfunc": {"form": "slices"}}})";
   auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + (d / "out").string() + "'");
