@@ -1,5 +1,6 @@
 #include "generators/scene.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -76,9 +77,22 @@ Scene parse_scene(const nlohmann::json& j) {
       const std::string where = "scene.families." + bounded_text(it.key(), 40);
       if (!find_family(it.key())) throw SceneError(where + ": unknown table family");
       if (!it->is_object()) throw SceneError(where + ": expected an object {\"form\": \"auto\" | \"slices\" | \"grid\"}");
+      // Boolean options a family offers besides "form" (CostPolicy::option_for).
+      static const std::map<std::string, std::vector<std::string>> kOptions = {{"ls", {"brdf"}}};
+      const auto opts = kOptions.find(it.key());
       for (auto k = it->begin(); k != it->end(); ++k) {
-        if (k.key() != "form") throw SceneError(where + "." + bounded_text(k.key(), 40) + ": unknown key (known: form)");
         const auto& v = k.value();
+        if (opts != kOptions.end() && std::find(opts->second.begin(), opts->second.end(), k.key()) != opts->second.end()) {
+          if (!v.is_boolean()) throw SceneError(where + "." + k.key() + " = " + describe_json(v) + " is not a boolean");
+          s.policy.options[it.key()][k.key()] = v.get<bool>();
+          continue;
+        }
+        if (k.key() != "form") {
+          std::string known = "form";
+          if (opts != kOptions.end())
+            for (const auto& o : opts->second) known += ", " + o;
+          throw SceneError(where + "." + bounded_text(k.key(), 40) + ": unknown key (known: " + known + ")");
+        }
         if (!v.is_string() || (v != "auto" && v != "slices" && v != "grid"))
           throw SceneError(where + ".form = " + describe_json(v) + " is not one of: auto, slices, grid");
         s.policy.form[it.key()] = v.get<std::string>();

@@ -59,6 +59,14 @@ struct CostPolicy {
     auto it = form.find(family);
     return it == form.end() ? "auto" : it->second;
   }
+  // Boolean family options of the scene file (families.<K>.<key>; so far ls: brdf).
+  std::map<std::string, std::map<std::string, bool>> options;
+  bool option_for(const std::string& family, const std::string& key, bool fallback) const {
+    const auto f = options.find(family);
+    if (f == options.end()) return fallback;
+    const auto k = f->second.find(key);
+    return k == f->second.end() ? fallback : k->second;
+  }
 };
 
 // Bytes of values and estimated generation seconds of one form (dry run: shapes exact,

@@ -124,6 +124,10 @@ struct SceneMaterialHandle::Impl {
   double eavg[2] = {NAN, NAN};                                 // slices: attributes of the E_corr slice
   double c = NAN, kd_value = NAN;
   std::map<std::string, const LoadedTable*> composite;  // role -> per-material table
+  const LoadedTable* brdf_modes = nullptr;  // ls: main and corner zone of the BRDF modes
+  const LoadedTable* brdf_corner = nullptr;
+  std::optional<LsBrdfMaterial> brdf_material;
+  std::optional<LsBrdfTables> brdf_generic;
 };
 
 namespace {
@@ -185,6 +189,8 @@ SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tab
         m.h_slice[k] = schema::hfunc::material_dataset(kind).matches(ds);
         schema::check_table(t.table, m.h_slice[k] ? schema::hfunc::material_dataset(kind) : schema::hfunc::dataset(kind, false));
         if (m.h_slice[k] && std::isnan(m.c)) m.c = t.info.attribute_number("ls_c", NAN);
+      } else if (role == "ls_brdf_modes" || role == "ls_brdf_corner") {
+        (role == "ls_brdf_modes" ? m.brdf_modes : m.brdf_corner) = &t;  // checked by the evaluator below
       } else if (role == "F_dr") {
         m.dr.emplace(t.table);
       } else if (role == "E_corr" || role == "E_sep" || role == "split_scale" || role == "split_bias") {
@@ -229,6 +235,33 @@ SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tab
     if (has_param("k_d") && std::isnan(m.kd_value)) m.kd_value = param("k_d");
     if (std::isnan(m.c) && m.kd) m.c = ls_c_from_kd(LsKdTable(m.kd->table), m.kd_value);
     if (std::isnan(m.kd_value) && m.kd) m.kd_value = lookup::ls_kd(LsKdTable(m.kd->table), m.c);
+  }
+  // The BRDF evaluator of an LS material, checked against the ls schema (LsBrdfZone): both
+  // zones per material at the c they were built for (attribute ls_c, which must agree with
+  // the material's c), or both generic.
+  if (m.brdf_modes || m.brdf_corner) {
+    try {
+      if (!m.brdf_modes || !m.brdf_corner)
+        throw TableFileError(std::string("role '") + (m.brdf_modes ? "ls_brdf_corner" : "ls_brdf_modes") +
+                             "' is missing (the BRDF needs both zones)");
+      const bool slice_m = schema::ls::kBrdfModesMaterial.matches(m.brdf_modes->table.name());
+      const bool slice_c = schema::ls::kBrdfCornerMaterial.matches(m.brdf_corner->table.name());
+      if (slice_m != slice_c) throw TableFileError("roles 'ls_brdf_modes' and 'ls_brdf_corner': one per material, one generic");
+      if (slice_m) {
+        const double c = m.brdf_modes->info.attribute_number("ls_c", NAN);
+        if (!(c == m.brdf_corner->info.attribute_number("ls_c", NAN)))
+          throw TableFileError("roles 'ls_brdf_modes' and 'ls_brdf_corner': attribute ls_c missing or different");
+        if (!std::isnan(m.c) && std::abs(c - m.c) > 1e-12 * std::max(1.0, m.c))
+          throw TableFileError("role 'ls_brdf_modes': built at c = " + format_number(c) + ", the material has c = " + format_number(m.c));
+        m.brdf_material.emplace(m.brdf_modes->table, m.brdf_corner->table, c);
+      } else {
+        m.brdf_generic.emplace(m.brdf_modes->table, m.brdf_corner->table);
+      }
+    } catch (const TableFileError& ex) {
+      throw TableFileError("scene material '" + e_.name + "': " + ex.what());
+    } catch (const std::exception& ex) {
+      throw TableFileError("scene material '" + e_.name + "': " + ex.what());
+    }
   }
 }
 
@@ -284,6 +317,13 @@ double SceneMaterialHandle::h(int k, double mu) const {
   const Impl& m = *impl_;
   if (k < 0 || k > 2 || !m.h[k]) missing(e_, "H" + std::to_string(k));
   return m.h_slice[k] ? m.h[k]->table.eval1(mu) : m.h[k]->table.eval2(ls_c(), mu);
+}
+
+LsBrdfValue SceneMaterialHandle::ls_brdf(double mu_i, double mu_o, double phi) const {
+  const Impl& m = *impl_;
+  if (m.brdf_material) return m.brdf_material->eval(mu_i, mu_o, phi);
+  if (m.brdf_generic) return m.brdf_generic->eval(ls_c(), mu_i, mu_o, phi);
+  missing(e_, "ls_brdf_modes");
 }
 
 double SceneMaterialHandle::fresnel_dr() const {

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "lookup/ls_brdf.hpp"
 #include "lookup/microfacet_albedo.hpp"
 #include "lookup/table_set.hpp"
 
@@ -75,6 +76,11 @@ class SceneMaterialHandle {
   double ls_kd() const;
   double ls_albedo(double mu) const;
   double h(int k, double mu) const;
+  // Its BRDF f = f_single + f_multiple (d'Eon Eq. 1, 17; lookup/ls_brdf.hpp) at mu_i, mu_o in
+  // (0, 1] and phi = phi_o - phi_i (0: back-scatter side), from the roles "ls_brdf_modes" +
+  // "ls_brdf_corner": the material's pair (slices, LsBrdfMaterial) or the generic pair over c
+  // (grid, LsBrdfTables at ls_c()). DomainError naming the value outside the domain.
+  LsBrdfValue ls_brdf(double mu_i, double mu_o, double phi) const;
   // Fresnel averages: exact scalars from the index, or the fresnel tables (form grid).
   double fresnel_dr() const;
   double fresnel_avg() const;
