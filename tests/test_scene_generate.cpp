@@ -169,12 +169,14 @@ TEST_CASE("SceneSet: lazy, one handle per material, values agree with the exact 
 TEST_CASE("SceneSet: an LS material's slices satisfy k_d = 2 int A mu dmu and match the default H grid") {
   const fs::path d = brdftab::testing::scratch_dir("scene_ls");
   std::ofstream(d / "scene.json") << R"({"materials": [{"name": "milk", "model": "ls", "c": 0.9}],
-                                         "families": {"ls": {"form": "slices"}, "hfunc": {"form": "slices"}}})";
+                                         "families": {"ls": {"form": "slices", "brdf": false}, "hfunc": {"form": "slices"}}})";
   auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + (d / "out").string() + "'");
   REQUIRE_MESSAGE(r.status == 0, r.err);
   lookup::SceneSet scene(d / "out");
   const auto& milk = scene.material("milk");
-  CHECK(scene.loaded_tables() == 4);  // A(mu), H^(0), H^(1), H^(2)
+  CHECK(scene.loaded_tables() == 4);  // A(mu), H^(0), H^(1), H^(2): families.ls.brdf = false
+  CHECK_FALSE(milk.has("ls_brdf_modes"));
+  CHECK_THROWS_AS(milk.ls_brdf(0.5, 0.5, 0.0), std::logic_error);
   CHECK(milk.ls_c() == 0.9);
   // The identity k_d = 2 int_0^1 A(mu) mu dmu: k_d is the solver's spherical albedo (stored
   // with the slice), the integral a Gauss-Legendre rule over the A(mu) slice (in t = mu^(1/4),
