@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <tuple>
 
 #include "cli_runner.hpp"
 #include "lookup/scene_set.hpp"
@@ -75,5 +76,37 @@ TEST_CASE("ls scene: families.ls.brdf must be a boolean") {
   CHECK(r.status == 2);
   CHECK(contains(r.err, "families.ls.brdf"));
   CHECK_FALSE(fs::exists(d / "out" / "ls.h5"));
+  fs::remove_all(d);
+}
+
+TEST_CASE("ls scene grid form: the handle's BRDF is the generic tables at its c") {
+  // A scene folder whose index serves the roles from the committed generic tables (what the
+  // grid form writes), without the ~30 s grid generation.
+  const fs::path d = brdftab::testing::scratch_dir("scene_ls_brdf_grid");
+  fs::copy_file(fs::path(BRDFTAB_SOURCE_DIR) / "tables" / "ls.h5", d / "ls.h5");
+  std::ofstream(d / "scene.index") << "brdftab-scene-index 1\ncontent_key test\nmaterial milk ls\nparam c 0.9\n"
+                                      "table ls_brdf_modes ls.h5 ls_brdf_modes\ntable ls_brdf_corner ls.h5 ls_brdf_corner\nend\n"
+                                      "material half ls\nparam c 0.9\ntable ls_brdf_modes ls.h5 ls_brdf_modes\nend\n";
+  lookup::SceneSet set(d);
+  const auto& milk = set.material("milk");
+  lookup::TableSet files(d);
+  const lookup::LsBrdfTables direct(files.table("ls.h5", "ls_brdf_modes"), files.table("ls.h5", "ls_brdf_corner"));
+  const double err = files.get("ls.h5", "ls_brdf_modes").info.attribute_number("max_abs_error", NAN);
+  REQUIRE(err > 0);
+  const numerics::LsHalfSpace exact(0.9, numerics::ls_table_solver_options(24));
+  for (const auto& [mi, mo, phi] : {std::tuple{0.3, 0.6, 1.0}, {0.9, 0.15, 2.5}, {0.5, 0.5, 0.0}}) {
+    const lookup::LsBrdfValue v = milk.ls_brdf(mi, mo, phi);
+    CHECK(v.f == direct.eval(0.9, mi, mo, phi).f);  // the same evaluator at the material's c
+    const double f_exact = numerics::ls_f_single(0.9, mi, mo, phi) + exact.f_multiple(mi, mo, phi);
+    CHECK(std::abs(v.f - f_exact) <= 2 * err);
+  }
+  // One zone only: the handle refuses to load, naming the material and the missing role.
+  try {
+    set.material("half");
+    FAIL("loaded a material with only one BRDF zone");
+  } catch (const lookup::TableFileError& e) {
+    CHECK(contains(e.what(), "half"));
+    CHECK(contains(e.what(), "ls_brdf_corner"));
+  }
   fs::remove_all(d);
 }
