@@ -45,7 +45,8 @@ Config test_config();
 Config narrowed(Config c);
 
 // Scene hook (generators/ls_scene.cpp): LS materials get their plane albedo A(mu) and exact
-// k_d, c from one solve each, or share the k_d(c) and A(c, mu) tables.
+// k_d, c from one solve each plus their BRDF Fourier-mode pair, or share the k_d(c), A(c, mu)
+// and generic BRDF tables (families.ls.brdf = false: no BRDF tables).
 std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);
 
 }  // namespace brdftab::gen::ls
