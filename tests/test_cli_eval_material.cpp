@@ -162,3 +162,45 @@ TEST_CASE("eval --dataset hfunc_<kind>_material_NAME: H(mu) at the material's c,
   CHECK(contains(e, "column 'mode': value '2'"));
   CHECK(contains(e, "holds mode = 1 (its name)"));
 }
+
+TEST_CASE("eval --dataset ls_brdf_modes_material_NAME: f at the material's c, read with its corner table") {
+  // The committed default tables hold the grey material's pair (50 KB); the reference is the
+  // exact solve at the material's c (one solve, ~6 s CPU, for all rows).
+  const fs::path dir = fs::path(BRDFTAB_SOURCE_DIR) / "tables";
+  const auto loaded = brdftab::lookup::load_table(dir / "ls.h5", "ls_brdf_modes_material_grey");
+  const double c = loaded.info.attribute_number("ls_c", NAN);
+  const double stated = loaded.info.attribute_number("max_rel_error", NAN);
+  REQUIRE(c > 0.5);
+  REQUIRE(c < 1);
+  REQUIRE(stated > 0);
+  REQUIRE(stated < 1e-4);
+  std::ostringstream cs;
+  cs.precision(17);
+  cs << c;
+  // Main zone, a grazing pair in the corner zone (mu_max < 0.01) and a mixed pair.
+  const std::string rows[] = {"0.5,0.3,1", "0.9,0.02,0", "0.004,0.003,2", "1,0.7,3.1"};
+  std::string with_c = "c,mu_i,mu_o,phi\n", without_c = "mu_i,mu_o,phi\n";
+  for (const auto& r : rows) with_c += cs.str() + "," + r + "\n", without_c += r + "\n";
+  const std::string tables = " --method table --tables '" + dir.string() + "' --dataset ls_brdf_modes_material_grey";
+  const auto table = column(eval("ls_brdf" + tables, without_c), "f");
+  const auto table_fm = column(eval("ls_brdf" + tables, without_c), "f_multiple");
+  CHECK(column(eval("ls_brdf" + tables, with_c), "f") == table);
+  const std::string exact_csv = eval("ls_brdf --method exact", with_c);
+  const auto exact = column(exact_csv, "f");
+  const auto exact_fm = column(exact_csv, "f_multiple");
+  REQUIRE(table.size() == std::size(rows));
+  // The stated error is relative in f (reported over f_multiple's table plus the closed-form
+  // single scattering); the f_multiple part alone is checked with the same absolute budget.
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    CHECK(std::abs(table[i] - exact[i]) <= stated * exact[i]);
+    CHECK(std::abs(table_fm[i] - exact_fm[i]) <= stated * exact[i]);
+  }
+  // A contradicting c: exit 2 naming the row, the column and the material's value.
+  const std::string e = eval("ls_brdf" + tables, "c,mu_i,mu_o,phi\n0.5,0.5,0.5,0\n", 2);
+  CHECK(contains(e, "row 1 (line 2), column 'c': value '0.5'"));
+  CHECK(contains(e, "holds c = "));
+  // The corner table alone is not a per-material pair: refused, naming it.
+  CHECK(contains(eval("ls_brdf --method table --tables '" + dir.string() + "' --dataset ls_brdf_corner_material_grey",
+                      with_c, 2),
+                 "dataset 'ls_brdf_corner_material_grey' has axes"));
+}

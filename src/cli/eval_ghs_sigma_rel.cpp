@@ -53,7 +53,7 @@ std::vector<Quantity> quantities() {
   q.material_tables.push_back(
       {std::string(schema::ghs_sigma_rel::kFile), std::string(schema::ghs_sigma_rel::kMaterial.name),
        {{"B", "B"}, {"c", "c"}},
-       [](const lookup::LoadedTable& t) -> Method {
+       [](const lookup::LoadedTable& t, lookup::TableSet&) -> Method {
          const lookup::GhsSigmaRelMaterial material(t);  // checks the schema, B and w_scale
          const double B = t.info.attribute_number("B", NAN), w_scale = t.info.attribute_number("w_scale", NAN);
          const lookup::Axis aw = t.table.axis(0);

@@ -48,7 +48,7 @@ HKind ls_kind(double mode) { return mode == 0 ? HKind::ls0 : mode == 1 ? HKind::
 MaterialTables material_tables(HKind kind, std::vector<std::pair<std::string, double>> pinned) {
   const schema::DatasetSchema ds = schema::hfunc::material_dataset(kind);
   return {std::string(schema::hfunc::kFile), std::string(ds.name), {{"c", "ls_c"}},
-          [ds](const lookup::LoadedTable& t) -> Method {
+          [ds](const lookup::LoadedTable& t, lookup::TableSet&) -> Method {
             schema::check_table(t.table, ds);
             const lookup::Table* table = &t.table;
             return [table](std::span<const double> in, std::span<double> out, const EvalContext&) {

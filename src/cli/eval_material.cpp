@@ -47,7 +47,7 @@ std::optional<Quantity> material_quantity(const Quantity& q, const std::filesyst
                                attribute + "' (the material's " + param + ") is missing or not a number");
     pin(param, *v, "its attribute '" + attribute + "'");
   }
-  Method bound = m->bind(loaded);
+  Method bound = m->bind(loaded, *tables);
   out.methods["table"] = [tables, bound](std::span<const double> in, std::span<double> result, const EvalContext& ctx) {
     bound(in, result, ctx);
   };

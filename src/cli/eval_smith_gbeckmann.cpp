@@ -43,7 +43,7 @@ std::vector<Quantity> quantities() {
   // A per-material table (`--dataset smith_gbeckmann_g1_material_NAME`): G1(b) at the material's p.
   q.material_tables.push_back(
       {std::string(schema::smith_gbeckmann::kFile), std::string(schema::smith_gbeckmann::kG1Material.name), {{"p", "p"}},
-       [](const lookup::LoadedTable& t) -> Method {
+       [](const lookup::LoadedTable& t, lookup::TableSet&) -> Method {
          schema::check_table(t.table, t.info.attribute_string("quantity"), schema::smith_gbeckmann::kG1Material);
          const lookup::Table* table = &t.table;
          const double m1 = schema::smith_gbeckmann::first_moment(t.info.attribute_number("p", NAN));

@@ -44,9 +44,11 @@ struct MaterialTables {
   // The parameters a material fixes, each with the dataset attribute holding its value
   // (e.g. {"p", "p"}; {"c", "ls_c"}).
   std::vector<std::pair<std::string, std::string>> fixed;
-  // The table method for rows of one material, built once from its loaded table. Rows
-  // reach it with every parameter, the fixed ones equal to the material's values.
-  std::function<Method(const lookup::LoadedTable&)> bind;
+  // The table method for rows of one material, built once from its loaded table (and, for a
+  // material held in more than one dataset, its companions read from the same set, which
+  // outlives the method). Rows reach it with every parameter, the fixed ones equal to the
+  // material's values.
+  std::function<Method(const lookup::LoadedTable&, lookup::TableSet&)> bind;
   // Parameters the prefix itself fixes, with their values (e.g. h_ls: {"mode", 1} for
   // "hfunc_ls1_material_"); same rule as `fixed`.
   std::vector<std::pair<std::string, double>> pinned = {};
