@@ -243,7 +243,7 @@ constexpr bool is_log = Tr == Transform::log || Tr == Transform::log_x_minus_1;
 // clamped and transformed axis by axis (one loop per transform), then the kernel.
 
 template <int D, int K, class T>
-void blocked_loop(const interp::AxisMap* m, const std::ptrdiff_t* st, const T* values, const double* pts,
+[[gnu::noinline]] void blocked_loop(const interp::AxisMap* m, const std::ptrdiff_t* st, const T* values, const double* pts,
                   std::size_t n, double* out) {
   constexpr int C = 64;
   alignas(32) double u[D][C];
@@ -271,9 +271,12 @@ void blocked_loop(const interp::AxisMap* m, const std::ptrdiff_t* st, const T* v
 // roots and divisions never hold up the instructions waiting for them and overlap
 // with the loads and sums (measured: 2-D bilinear on sqrt(1-x), x^(1/4) axes 3.16 -> 2.47
 // ns per point against transforming blocks of 64 points first; a run-time switch per axis
-// inside the loop 2.86). n a multiple of 4.
+// inside the loop 2.86). n a multiple of 4. Each loop is a function of its own, everything
+// inlined into it (flatten): in one function with the 49 pairs GCC's inliner gives up and
+// calls the kernel out of line, and the loops of the other paths change too (measured up to
+// 13% slower); so the identity and blocked loops are functions of their own as well.
 template <int D, int K, class T, Transform T0, Transform T1>
-void pipelined_loop(const interp::AxisMap* m, const std::ptrdiff_t* st, const T* values, const double* pts,
+[[gnu::noinline, gnu::flatten]] void pipelined_loop(const interp::AxisMap* m, const std::ptrdiff_t* st, const T* values, const double* pts,
                     std::size_t n, double* out) {
   static_assert(D <= 2);
   if (n == 0) return;
@@ -295,20 +298,24 @@ void pipelined_loop(const interp::AxisMap* m, const std::ptrdiff_t* st, const T*
   _mm256_storeu_pd(out + i, point4<D, K, T>(m, st, values, next));
 }
 
+// All axes identity: u = x, no clamp in x (as the scalar kernel of all-identity tables).
+template <int D, int K, class T>
+[[gnu::noinline]] void identity_loop(const interp::AxisMap* m, const std::ptrdiff_t* st, const T* values,
+                                     const double* pts, std::size_t n, double* out) {
+  for (std::size_t i = 0; i + 4 <= n; i += 4) {
+    __m256d x[D];
+    load_coords<D>(pts + D * i, x);
+    _mm256_storeu_pd(out + i, point4<D, K, T>(m, st, values, x));
+  }
+}
+
 template <int D, int K, class T>
 void batch_loop(const interp::AxisMap* maps, const std::size_t* strides, const T* values, const double* pts,
                 std::size_t n, double* out, bool identity) {
   std::ptrdiff_t st[D];
   interp::AxisMap m[D];  // local copies: stores to out cannot alias them
   for (int d = 0; d < D; ++d) st[d] = static_cast<std::ptrdiff_t>(strides[d]), m[d] = maps[d];
-  if (identity) {  // u = x, no clamp in x (as the scalar kernel of all-identity tables)
-    for (std::size_t i = 0; i + 4 <= n; i += 4) {
-      __m256d x[D];
-      load_coords<D>(pts + D * i, x);
-      _mm256_storeu_pd(out + i, point4<D, K, T>(m, st, values, x));
-    }
-    return;
-  }
+  if (identity) return identity_loop<D, K, T>(m, st, values, pts, n, out);
   if constexpr (D <= 2) {
     with_transform(m[0].transform, [&]<Transform T0>() {
       if constexpr (D == 1 && is_log<T0>)
