@@ -243,8 +243,12 @@ constexpr bool is_log = Tr == Transform::log || Tr == Transform::log_x_minus_1;
 // clamped and transformed axis by axis (one loop per transform), then the kernel.
 
 template <int D, int K, class T>
-[[gnu::noinline]] void blocked_loop(const interp::AxisMap* m, const std::ptrdiff_t* st, const T* values, const double* pts,
+[[gnu::noinline]] void blocked_loop(const interp::AxisMap* maps, const std::ptrdiff_t* strides, const T* values, const double* pts,
                   std::size_t n, double* out) {
+  // Local copies: the stores to out cannot alias them (else they are reloaded every step).
+  interp::AxisMap m[D];
+  std::ptrdiff_t st[D];
+  for (int d = 0; d < D; ++d) m[d] = maps[d], st[d] = strides[d];
   constexpr int C = 64;
   alignas(32) double u[D][C];
   for (std::size_t start = 0; start < n; start += C) {
@@ -276,8 +280,12 @@ template <int D, int K, class T>
 // calls the kernel out of line, and the loops of the other paths change too (measured up to
 // 13% slower); so the identity and blocked loops are functions of their own as well.
 template <int D, int K, class T, Transform T0, Transform T1>
-[[gnu::noinline, gnu::flatten]] void pipelined_loop(const interp::AxisMap* m, const std::ptrdiff_t* st, const T* values, const double* pts,
+[[gnu::noinline, gnu::flatten]] void pipelined_loop(const interp::AxisMap* maps, const std::ptrdiff_t* strides, const T* values, const double* pts,
                     std::size_t n, double* out) {
+  // Local copies: the stores to out cannot alias them (else they are reloaded every step).
+  interp::AxisMap m[D];
+  std::ptrdiff_t st[D];
+  for (int d = 0; d < D; ++d) m[d] = maps[d], st[d] = strides[d];
   static_assert(D <= 2);
   if (n == 0) return;
   __m256d next[D];
@@ -300,8 +308,12 @@ template <int D, int K, class T, Transform T0, Transform T1>
 
 // All axes identity: u = x, no clamp in x (as the scalar kernel of all-identity tables).
 template <int D, int K, class T>
-[[gnu::noinline]] void identity_loop(const interp::AxisMap* m, const std::ptrdiff_t* st, const T* values,
+[[gnu::noinline]] void identity_loop(const interp::AxisMap* maps, const std::ptrdiff_t* strides, const T* values,
                                      const double* pts, std::size_t n, double* out) {
+  // Local copies: the stores to out cannot alias them (else they are reloaded every step).
+  interp::AxisMap m[D];
+  std::ptrdiff_t st[D];
+  for (int d = 0; d < D; ++d) m[d] = maps[d], st[d] = strides[d];
   for (std::size_t i = 0; i + 4 <= n; i += 4) {
     __m256d x[D];
     load_coords<D>(pts + D * i, x);
