@@ -125,44 +125,6 @@ void loads_floor(benchmark::State& state) {
   per_call(state, kPoints);
 }
 
-// floor/loads/<D>d/<K>/<storage>: the K^D table values of each point (the stencil of a
-// D-dimensional linear (K = 2) or cubic (K = 4) query, K contiguous along the last axis) at
-// precomputed offsets on the benchmark's table sizes, widened and summed: the loads every
-// kernel of that shape does, without the stencil arithmetic.
-template <class T, int D, int K>
-void loads_floor_nd(benchmark::State& state) {
-  const int n = D == 2 ? 64 : 16;
-  std::size_t size = 1;
-  for (int d = 0; d < D; ++d) size *= n;
-  std::mt19937_64 rng(1);
-  std::uniform_int_distribution<int> cell(0, n - K);
-  std::vector<T> table(size, T(0.5));
-  std::vector<std::int32_t> off(kPoints);
-  for (auto& o : off) {
-    o = 0;
-    for (int d = 0; d < D; ++d) o = o * n + cell(rng);
-  }
-  std::vector<double> out(kPoints);
-  constexpr int kCount = D == 2 ? K * K : K * K * K;
-  for (auto _ : state) {
-    const T* v = table.data();
-    for (std::size_t i = 0; i < kPoints; ++i) {
-      const T* p = v + off[i];
-      double acc[K] = {};  // K independent sums (chains of K^(D-1) adds, as the kernels' tree)
-      for (int j = 0; j < kCount; ++j) {
-        const int last = j % K, mid = (j / K) % K, first = j / (K * K);  // D = 2: first = 0
-        acc[last] += static_cast<double>(p[(first * n + mid) * n * (D == 3) + mid * n * (D == 2) + last]);
-      }
-      double s = acc[0];
-      for (int k = 1; k < K; ++k) s += acc[k];
-      out[i] = s;
-    }
-    benchmark::DoNotOptimize(out.data());
-    benchmark::ClobberMemory();
-  }
-  per_call(state, kPoints);
-}
-
 void register_floor_benchmarks() {
   auto pts = std::make_shared<std::vector<double>>(2 * kPoints);
   std::mt19937_64 rng(2);
@@ -180,12 +142,6 @@ void register_floor_benchmarks() {
   });
   benchmark::RegisterBenchmark("lookup/floor/loads/float32", loads_floor<float>);
   benchmark::RegisterBenchmark("lookup/floor/loads/float64", loads_floor<double>);
-  benchmark::RegisterBenchmark("lookup/floor/loads/2d/cubic/float32", loads_floor_nd<float, 2, 4>);
-  benchmark::RegisterBenchmark("lookup/floor/loads/2d/cubic/float64", loads_floor_nd<double, 2, 4>);
-  benchmark::RegisterBenchmark("lookup/floor/loads/3d/linear/float32", loads_floor_nd<float, 3, 2>);
-  benchmark::RegisterBenchmark("lookup/floor/loads/3d/linear/float64", loads_floor_nd<double, 3, 2>);
-  benchmark::RegisterBenchmark("lookup/floor/loads/3d/cubic/float32", loads_floor_nd<float, 3, 4>);
-  benchmark::RegisterBenchmark("lookup/floor/loads/3d/cubic/float64", loads_floor_nd<double, 3, 4>);
   for (auto t : {lookup::Transform::log, lookup::Transform::sqrt, lookup::Transform::sqrt_one_minus,
                  lookup::Transform::fourth_root, lookup::Transform::x_over_k_plus_x}) {
     const lookup::Axis a = lookup::make_axis("a", t, 0.01, 0.99, 3);
