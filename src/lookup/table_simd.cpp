@@ -273,9 +273,9 @@ template <int D, int K, class T>
 // software-pipelined: each step transforms the coordinates of the next 4 points and
 // interpolates the 4 points transformed in the step before, so the long-latency square
 // roots and divisions never hold up the instructions waiting for them and overlap
-// with the loads and sums (measured: 2-D bilinear on sqrt(1-x), x^(1/4) axes 3.16 -> 2.47
+// with the loads and sums (measured: 2-D bilinear on sqrt(1-x), x^(1/4) axes 3.24 -> 2.53
 // ns per point against transforming blocks of 64 points first; a run-time switch per axis
-// inside the loop 2.86). n a multiple of 4. Each loop is a function of its own, everything
+// inside the pipelined loop 2.86). n a multiple of 4. Each loop is a function of its own, everything
 // inlined into it (flatten): in one function with the 49 pairs GCC's inliner gives up and
 // calls the kernel out of line, and the loops of the other paths change too (measured up to
 // 13% slower); so the identity and blocked loops are functions of their own as well.
