@@ -207,3 +207,58 @@ TEST_CASE("vector transforms: log within 1 ulp of long double logl, the others b
   }
 }
 #endif
+
+TEST_CASE("scalar lookups with compile-time transforms (rank 1 and 2) equal the batch paths bit for bit") {
+  // Rank 1 and 2 scalar queries on transformed axes run a kernel instantiated per transform
+  // pair, taking the square roots of both axes in one sqrtpd on the sqrt family; the generic
+  // batch path (AVX2 off) evaluates the same points through the run-time transform switch and
+  // std::sqrt / std::log, and must agree to the last bit, log axes included. The AVX2 batch
+  // (one loop per transform pair) must agree too on every pair without a log axis.
+  const Transform all[] = {Transform::identity,      Transform::log,           Transform::sqrt,
+                           Transform::sqrt_one_minus, Transform::x_over_k_plus_x, Transform::log_x_minus_1,
+                           Transform::fourth_root};
+  auto axis_for = [](Transform t, const char* name, int n) {
+    switch (t) {
+      case Transform::log: return make_axis(name, t, 0.01, 100.0, n);
+      case Transform::sqrt: return make_axis(name, t, 0.0, 4.0, n);
+      case Transform::sqrt_one_minus: return make_axis(name, t, -3.0, 1.0, n);
+      case Transform::x_over_k_plus_x: return make_axis(name, t, 0.0, INFINITY, n, 2.0);
+      case Transform::log_x_minus_1: return make_axis(name, t, 1.001, 30.0, n);
+      case Transform::fourth_root: return make_axis(name, t, 0.0, 1.0, n);
+      case Transform::identity: break;
+    }
+    return make_axis(name, Transform::identity, -0.5, 1.5, n);
+  };
+  int tables = 0;
+  for (bool avx2 : {false, true})
+  for (Transform t0 : all)
+    for (int t1i = -1; t1i < 7; ++t1i)  // -1: rank 1
+      for (auto in : {Interpolation::linear, Interpolation::cubic})
+        for (auto st : {Storage::float32, Storage::float64}) {
+          std::vector<Axis> axes = {axis_for(t0, "a", 7)};
+          if (t1i >= 0) axes.push_back(axis_for(all[t1i], "b", 6));
+          INFO(transform_name(t0) << ", " << (t1i >= 0 ? transform_name(all[t1i]) : "-") << ", "
+                                  << interpolation_name(in) << ", " << storage_name(st));
+          // With AVX2 on, the batch of rank 1 and 2 runs the loops fixed per transform pair
+          // (pipelined unless an axis is log); bit for bit without a log axis.
+          const bool log_axis = t0 == Transform::log || t0 == Transform::log_x_minus_1 ||
+                                (t1i >= 0 && (all[t1i] == Transform::log || all[t1i] == Transform::log_x_minus_1));
+          if (avx2 && log_axis) continue;
+          detail::set_avx2_enabled(avx2);
+          const Table t = make_table(axes, st, in);
+          const std::size_t rank = axes.size(), n = 61;
+          const auto pts = awkward_points(axes, n, 7 + tables);
+          std::vector<double> generic(n);
+          t.eval_batch(pts, generic);
+          for (std::size_t i = 0; i < n; ++i) {
+            const double scalar = t.eval({pts.data() + rank * i, rank});
+            if (!same_bits(scalar, generic[i])) {
+              INFO("point " << i << ": " << pts[rank * i] << (rank == 2 ? ", " : "") << (rank == 2 ? pts[rank * i + 1] : 0.0));
+              CHECK(scalar == generic[i]);
+            }
+          }
+          ++tables;
+        }
+  detail::set_avx2_enabled(true);
+  CHECK(tables == 7 * 8 * 4 + 5 * 6 * 4);  // AVX2: the 5 non-log transforms, rank 1 and 5 x 5 pairs
+}

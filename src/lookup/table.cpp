@@ -123,6 +123,67 @@ struct KernelImpl {
   [[gnu::flatten]] static double eval(const Table& tb, const double* x) {
     return point<Identity>(tb.maps_.data(), tb.strides_.data(), data(tb), x);
   }
+  // Scalar query on rank 1 and 2 tables with the axis transforms fixed at compile time (one
+  // instantiation per transform pair, chosen at construction): no switch per axis and query,
+  // and on the sqrt family (sqrt, sqrt(1-x), x^(1/4)) the square roots of both axes taken by
+  // one two-lane sqrtpd (IEEE sqrt is correctly rounded lane by lane, so the values are those
+  // of std::sqrt: the result is bit-identical to point<false>, tests/test_lookup_interpolation.cpp).
+  template <Transform Tr>
+  static constexpr bool sqrt_like = Tr == Transform::sqrt || Tr == Transform::sqrt_one_minus || Tr == Transform::fourth_root;
+  template <Transform Tr>
+  static inline double before_sqrt(double x) { return Tr == Transform::sqrt_one_minus ? 1.0 - x : x; }
+  template <Transform T0, Transform T1>
+  [[gnu::flatten]] static double eval_fixed(const Table& tb, const double* x) {
+    const interp::AxisMap* maps = tb.maps_.data();
+    const std::size_t* strides = tb.strides_.data();
+    int base[D];
+    double w[D][K];
+    bool nan = false;
+    std::size_t offset = 0;
+    if constexpr (D == 2 && sqrt_like<T0> && sqrt_like<T1>) {
+#if defined(__SSE2__)
+      double c[2];
+      for (int d = 0; d < 2; ++d) {  // clamped as interp::stencil does (NaN stays NaN)
+        double v = x[d];
+        nan |= v != v;
+        v = v < maps[d].x_lo ? maps[d].x_lo : v;
+        c[d] = v > maps[d].x_hi ? maps[d].x_hi : v;
+      }
+      __m128d r = _mm_sqrt_pd(_mm_set_pd(before_sqrt<T1>(c[1]), before_sqrt<T0>(c[0])));
+      double u[2];
+      if constexpr (T0 == Transform::fourth_root && T1 == Transform::fourth_root) {
+        r = _mm_sqrt_pd(r);
+        _mm_storeu_pd(u, r);
+      } else {
+        _mm_storeu_pd(u, r);
+        if constexpr (T0 == Transform::fourth_root) u[0] = std::sqrt(u[0]);
+        if constexpr (T1 == Transform::fourth_root) u[1] = std::sqrt(u[1]);
+      }
+      for (int d = 0; d < 2; ++d) {
+        interp::stencil_u<K>(maps[d], u[d], base[d], w[d]);
+        offset += base[d] * strides[d];
+      }
+      const double v = accumulate_point<D, K, T>(data(tb) + offset, strides, w);
+      return nan ? std::numeric_limits<double>::quiet_NaN() : v;
+#endif
+    }
+    nan |= x[0] != x[0];
+    axis_stencil<T0>(maps[0], x[0], base[0], w[0]);
+    offset += base[0] * strides[0];
+    if constexpr (D == 2) {
+      nan |= x[1] != x[1];
+      axis_stencil<T1>(maps[1], x[1], base[1], w[1]);
+      offset += base[1] * strides[1];
+    }
+    const double v = accumulate_point<D, K, T>(data(tb) + offset, strides, w);
+    return nan ? std::numeric_limits<double>::quiet_NaN() : v;
+  }
+  // Stencil of one axis through a transform fixed at compile time (identity axes in a table
+  // with other axes are clamped in x, as point<false> does).
+  template <Transform Tr>
+  static inline void axis_stencil(const interp::AxisMap& a, double x, int& base, double* w) {
+    interp::stencil<K>(a, x, [&a](double v) { return apply_transform(Tr, v, a.k); }, base, w);
+  }
   // Batched: groups of 4 points go to the AVX2 kernel (table_simd.cpp) when the CPU has
   // AVX2; the rest, and every point on other CPUs, take the generic path: points in chunks,
   // pass 1 computes every point's stencil (index and weights) axis by axis, a loop without
@@ -185,19 +246,41 @@ namespace {
 using KernelFn = double (*)(const Table&, const double*);
 using BatchFn = void (*)(const Table&, const double*, std::size_t, double*);
 
+// Calls f.template operator()<Tr>() for the transform t.
+template <class F>
+auto with_transform(Transform t, F&& f) {
+  switch (t) {
+    case Transform::log: return f.template operator()<Transform::log>();
+    case Transform::sqrt: return f.template operator()<Transform::sqrt>();
+    case Transform::sqrt_one_minus: return f.template operator()<Transform::sqrt_one_minus>();
+    case Transform::x_over_k_plus_x: return f.template operator()<Transform::x_over_k_plus_x>();
+    case Transform::log_x_minus_1: return f.template operator()<Transform::log_x_minus_1>();
+    case Transform::fourth_root: return f.template operator()<Transform::fourth_root>();
+    case Transform::identity: break;
+  }
+  return f.template operator()<Transform::identity>();
+}
+
 template <int D, int K, class T>
-void pick(bool identity, KernelFn& k, BatchFn& b) {
+void pick(const Transform* tr, bool identity, KernelFn& k, BatchFn& b) {
   k = identity ? &KernelImpl<D, K, T>::template eval<true> : &KernelImpl<D, K, T>::template eval<false>;
   b = identity ? &KernelImpl<D, K, T>::template batch<true> : &KernelImpl<D, K, T>::template batch<false>;
+  if (identity) return;
+  if constexpr (D == 1)
+    k = with_transform(tr[0], []<Transform T0>() -> KernelFn { return &KernelImpl<1, K, T>::template eval_fixed<T0, T0>; });
+  if constexpr (D == 2)
+    k = with_transform(tr[0], [tr]<Transform T0>() -> KernelFn {
+      return with_transform(tr[1], []<Transform T1>() -> KernelFn { return &KernelImpl<2, K, T>::template eval_fixed<T0, T1>; });
+    });
 }
 
 template <int K, class T>
-void pick_rank(int rank, bool identity, KernelFn& k, BatchFn& b) {
+void pick_rank(int rank, const Transform* tr, bool identity, KernelFn& k, BatchFn& b) {
   switch (rank) {
-    case 1: return pick<1, K, T>(identity, k, b);
-    case 2: return pick<2, K, T>(identity, k, b);
-    case 3: return pick<3, K, T>(identity, k, b);
-    default: return pick<4, K, T>(identity, k, b);
+    case 1: return pick<1, K, T>(tr, identity, k, b);
+    case 2: return pick<2, K, T>(tr, identity, k, b);
+    case 3: return pick<3, K, T>(tr, identity, k, b);
+    default: return pick<4, K, T>(tr, identity, k, b);
   }
 }
 }  // namespace
@@ -251,12 +334,14 @@ Table::Table(std::string name, std::vector<Axis> axes, std::span<const double> v
     identity = identity && a.transform == Transform::identity;
   }
   const bool cubic = interpolation_ == Interpolation::cubic;
+  Transform tr[kMaxRank];
+  for (int d = 0; d < rank_; ++d) tr[d] = axes_[d].transform;
   if (storage_ == Storage::float32)
-    cubic ? pick_rank<4, float>(rank_, identity, kernel_, batch_kernel_)
-          : pick_rank<2, float>(rank_, identity, kernel_, batch_kernel_);
+    cubic ? pick_rank<4, float>(rank_, tr, identity, kernel_, batch_kernel_)
+          : pick_rank<2, float>(rank_, tr, identity, kernel_, batch_kernel_);
   else
-    cubic ? pick_rank<4, double>(rank_, identity, kernel_, batch_kernel_)
-          : pick_rank<2, double>(rank_, identity, kernel_, batch_kernel_);
+    cubic ? pick_rank<4, double>(rank_, tr, identity, kernel_, batch_kernel_)
+          : pick_rank<2, double>(rank_, tr, identity, kernel_, batch_kernel_);
 }
 
 double Table::at_index(std::span<const int> index) const {

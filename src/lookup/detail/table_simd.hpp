@@ -9,6 +9,8 @@
 // into one vector per stencil node with one shuffle, no gathers. The sum is interp::accumulate
 // lane by lane, with the same operations in the same order, so results are bit-identical
 // to the scalar kernel on identity, sqrt, sqrt(1-x), x^(1/4) and x/(k+x) axes.
+// Rank 1 and 2 batches on those transformed axes run one loop per pair of transforms,
+// software-pipelined (the next 4 points transformed while the previous 4 are interpolated).
 //
 // log and log(x-1) axes use a vector logarithm (log4_avx2: fdlibm's e_log.c algorithm,
 // error < 1 ulp) where the scalar path calls std::log (glibc, < 0.52 ulp); the two can
