@@ -1,6 +1,6 @@
 // Table family microfacet_albedo (issue 10): the directional albedo of a microfacet BRDF with
 // F = 1 and its split-sum pair, E(mu) = Integral D G2 / (4 mu_i mu_o) mu_i dw_i, for GGX,
-// Beckmann (on (alpha, mu)) and the generalized Beckmann NDF (on (p, beta, mu) and per
+// Beckmann (on (alpha, s), s a sheared mu coordinate) and the generalized Beckmann NDF (on (p, beta, mu) and per
 // material on (beta, mu)), and the hemispherical averages E_avg = 2 Integral E mu dmu.
 // Exact values: numerics::microfacet_albedo_row (1e-10 absolute; one call gives all four
 // quantities) and numerics::microfacet_albedo_avg. Schema and axis transforms (with the

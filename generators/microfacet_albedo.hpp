@@ -31,12 +31,12 @@ struct Material {
 
 struct Config {
   // GGX and Beckmann on (alpha, s(mu; alpha)) (lookup/microfacet_albedo_schema.hpp): compact
-  // 91 x 89 float32 (32.4 KB), precise refined 4 times, 361 x 353; E_avg on 185 alpha.
+  // 91 x 89 float32 (32.4 KB), precise refined 4 times, 361 x 353; E_avg on 232 alpha.
   double alpha_lo = 0.01, alpha_hi = 1, mu_lo = 1e-6, mu_hi = 1;
   double compact_log_alpha_step = 0.0512, compact_s_step = 0.01137;
   int precise_refine = 4;
   bool compact = true, precise = true, ggx = true, beckmann = true;
-  double avg_log_alpha_step = 0.025;
+  double avg_log_alpha_step = 0.02;
   // Generalized Beckmann on (p, beta, mu) (compact only), per material on (beta, mu) at the
   // listed p (same beta, mu nodes), E_avg on (p, beta).
   bool gbeckmann = true;
@@ -47,7 +47,7 @@ struct Config {
   // Off-grid error samples (rows x per row); each costs one exact E (0.2-20 ms; the
   // generalized Beckmann 20-80 ms) or one E_avg (~100 E).
   int error_rows = 48, error_per_row = 24;
-  int avg_error_points = 16;
+  int avg_error_points = 32;
   int g_error_rows = 16, g_error_per_row = 8, g_avg_error_rows = 2, g_avg_error_per_row = 1;
   // Non-empty: one 1-D table per material and quantity on mu at its roughness (scenes;
   // microfacet_albedo_scene.cpp), material_mu_points points on mu^(1/4), float64 cubic.
