@@ -31,12 +31,12 @@ struct Material {
 
 struct Config {
   // GGX and Beckmann on (alpha, s(mu; alpha)) (lookup/microfacet_albedo_schema.hpp): compact
-  // 91 x 89 float32 (32.4 KB), precise refined 4 times, 361 x 353; E_avg on 232 alpha.
+  // 91 x 89 float32 (32.4 KB), precise refined 4 times, 361 x 353; E_avg on 289 alpha.
   double alpha_lo = 0.01, alpha_hi = 1, mu_lo = 1e-6, mu_hi = 1;
   double compact_log_alpha_step = 0.0512, compact_s_step = 0.01137;
   int precise_refine = 4;
   bool compact = true, precise = true, ggx = true, beckmann = true;
-  double avg_log_alpha_step = 0.02;
+  double avg_log_alpha_step = 0.016;
   // Generalized Beckmann on (p, beta, mu) (compact only), per material on (beta, mu) at the
   // listed p (same beta, mu nodes), E_avg on (p, beta).
   bool gbeckmann = true;
