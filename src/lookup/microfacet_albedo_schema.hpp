@@ -27,7 +27,7 @@
 //          sheared along the transition); the root term r keeps the mu^(1/4) resolution near
 //          mu = 0 (E - E(0) ~ mu log mu at every alpha) and near mu = 1. Measured (off-grid max
 //          abs error over the four quantities, 103 x 69 nodes, 1260 points incl. alpha ~ 0.01
-//          near grazing, mu near 0 and 1; /tmp prototype): mu^(1/4) alone Beckmann 2.0e-5;
+//          near grazing, mu near 0 and 1; a throwaway prototype): mu^(1/4) alone Beckmann 2.0e-5;
 //          l alone (w = 0) Beckmann 3.8e-6 but GGX 1.3e-3 (alpha ~ 0.8, mu ~ 3e-3: linear in mu
 //          near 0 at large alpha misses mu log mu); l with (mu / alpha)^(1/2) inside GGX 1.1e-5;
 //          w = 0.3: 4.4e-5 (mu ~ 2e-6 at alpha = 0.01: too few root nodes); w = 1/2: Beckmann
