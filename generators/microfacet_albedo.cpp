@@ -1,6 +1,6 @@
 // Table family microfacet_albedo (issue 10): the directional albedo of a microfacet BRDF with
 // F = 1 and its split-sum pair, E(mu) = Integral D G2 / (4 mu_i mu_o) mu_i dw_i, for GGX,
-// Beckmann (on (alpha, mu)) and the generalized Beckmann NDF (on (p, beta, mu) and per
+// Beckmann (on (alpha, s), s a sheared mu coordinate) and the generalized Beckmann NDF (on (p, beta, mu) and per
 // material on (beta, mu)), and the hemispherical averages E_avg = 2 Integral E mu dmu.
 // Exact values: numerics::microfacet_albedo_row (1e-10 absolute; one call gives all four
 // quantities) and numerics::microfacet_albedo_avg. Schema and axis transforms (with the
@@ -83,7 +83,7 @@ Config read_config(const nlohmann::json& entry) {
   std::tie(c.alpha_lo, c.alpha_hi) = r.range("alpha_range", {c.alpha_lo, c.alpha_hi}, 1e-3, 10.0);
   std::tie(c.mu_lo, c.mu_hi) = r.range("mu_range", {c.mu_lo, c.mu_hi}, numerics::kAlbedoMuMin, 1.0);
   c.compact_log_alpha_step = r.number("compact_log_alpha_step", c.compact_log_alpha_step, 1e-3, 10.0);
-  c.compact_mu_step = r.number("compact_mu_step", c.compact_mu_step, 1e-3, 20.0);
+  c.compact_s_step = r.number("compact_s_step", c.compact_s_step, 1e-3, 1.0);
   c.precise_refine = static_cast<int>(r.integer("precise_refine", c.precise_refine, 1, 64));
   c.compact = r.boolean("compact", c.compact);
   c.precise = r.boolean("precise", c.precise);
@@ -132,7 +132,7 @@ nlohmann::json to_json_grids(const Config& c) {
   return {{"alpha_range", {c.alpha_lo, c.alpha_hi}},
           {"mu_range", {c.mu_lo, c.mu_hi}},
           {"compact_log_alpha_step", c.compact_log_alpha_step},
-          {"compact_mu_step", c.compact_mu_step},
+          {"compact_s_step", c.compact_s_step},
           {"precise_refine", c.precise_refine},
           {"compact", c.compact},
           {"precise", c.precise},
@@ -263,6 +263,20 @@ double component(const MicrofacetAlbedo& e, int q) {
 }
 
 int log_points(double lo, double hi, double step) { return points_for_step(std::log(hi / lo), step); }
+
+// mu of a node s of the sheared coordinate s(mu; alpha) (schema::microfacet_albedo::s_of_mu,
+// increasing in mu) by bisection on [mu_lo, mu_hi] to the last bit.
+double mu_of_s(const sc::MuShear& m, double s, double alpha) {
+  if (!(s > 0)) return m.mu_lo;
+  if (!(s < 1)) return m.mu_hi;
+  double lo = m.mu_lo, hi = m.mu_hi;
+  for (int k = 0; k < 1100; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    (sc::s_of_mu(m, mid, alpha) < s ? lo : hi) = mid;
+  }
+  return std::abs(sc::s_of_mu(m, lo, alpha) - s) <= std::abs(sc::s_of_mu(m, hi, alpha) - s) ? lo : hi;
+}
 int mu_points(double lo, double hi, double step) {
   return points_for_step(transformed_span(sc::kMu.transform, lo, hi), step);
 }
@@ -315,8 +329,17 @@ BuiltTable finish(TableSpec spec, const RowFunction& row, const GenerateContext&
 void build_ndf(const Config& c, int ndf, const GenerateContext& ctx, std::vector<BuiltTable>& tables) {
   AlbedoCache cache(ndf == 0 ? NdfKind::ggx : NdfKind::beckmann);
   const int na = log_points(c.alpha_lo, c.alpha_hi, c.compact_log_alpha_step);
-  const int nm = mu_points(c.mu_lo, c.mu_hi, c.compact_mu_step);
-  const std::string domain = "alpha in " + range_text(c.alpha_lo, c.alpha_hi) + ", mu in " + range_text(c.mu_lo, c.mu_hi);
+  const int ns = points_for_step(1.0, c.compact_s_step);
+  sc::MuShear shear;
+  shear.mu_lo = c.mu_lo, shear.mu_hi = c.mu_hi;
+  const std::string domain = "alpha in " + range_text(c.alpha_lo, c.alpha_hi) + ", mu in " + range_text(c.mu_lo, c.mu_hi) +
+                             " (s in [0, 1])";
+  // Targeted error points (alpha, s): the grazing set, plus mu at the range's ends at the
+  // smallest alpha (one-sided stencils in s).
+  std::vector<std::vector<double>> targeted = targeted_grazing(c.alpha_lo, c.alpha_hi, c.mu_lo, c.mu_hi, {});
+  const double a_edge = std::min(c.alpha_hi, c.alpha_lo * 1.01);
+  for (double mu : {2 * c.mu_lo, c.mu_hi - 1e-3 * (c.mu_hi - c.mu_lo)}) targeted.push_back({a_edge, mu});
+  for (std::vector<double>& pt : targeted) pt[1] = sc::s_of_mu(shear, pt[1], pt[0]);
   // Precise first: the compact grid's values are then all in the cache.
   for (bool precise : {true, false}) {
     if (precise ? !c.precise : !c.compact) continue;
@@ -327,19 +350,31 @@ void build_ndf(const Config& c, int ndf, const GenerateContext& ctx, std::vector
       spec.dataset = std::string(ds.name);
       spec.quantity = std::string(ds.quantity);
       spec.axes = {axis_spec(sc::kAlpha, c.alpha_lo, c.alpha_hi, f * (na - 1) + 1),
-                   axis_spec(sc::kMu, c.mu_lo, c.mu_hi, f * (nm - 1) + 1)};
+                   axis_spec(sc::kS, 0.0, 1.0, f * (ns - 1) + 1)};
       spec.storage = precise ? lookup::Storage::float64 : lookup::Storage::float32;
       spec.domain = domain;
       spec.method = kMethodE;
       spec.error_rows = c.error_rows;
       spec.error_per_row = c.error_per_row;
-      spec.targeted_points = targeted_grazing(c.alpha_lo, c.alpha_hi, c.mu_lo, c.mu_hi, {});
-      spec.targeted_text = kTargetedText;
-      const RowFunction row = [&cache, q](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
+      spec.targeted_points = targeted;
+      spec.targeted_text = std::string(kTargetedText) + "; alpha = alpha_lo * 1.01 at mu = 2 mu_lo and mu_hi - 1e-3 (mu_hi - mu_lo); "
+                           "as (alpha, s(mu; alpha))";
+      const RowFunction row = [&cache, &shear, q](std::span<const double> outer, std::span<const double> ss,
+                                                  std::span<double> out) {
+        std::vector<double> mus(ss.size());
+        for (std::size_t j = 0; j < ss.size(); ++j) mus[j] = mu_of_s(shear, ss[j], outer[0]);
         const std::vector<MicrofacetAlbedo> e = cache.row(outer[0], 1.0, mus);
-        for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
+        for (std::size_t j = 0; j < ss.size(); ++j) out[j] = component(e[j], q);
       };
-      tables.push_back(finish(std::move(spec), row, ctx, q == 0 && (precise || !c.precise) ? kValueSeconds : 0.0));
+      BuiltTable t = finish(std::move(spec), row, ctx, q == 0 && (precise || !c.precise) ? kValueSeconds : 0.0);
+      t.dataset.attributes["mu_s_root_weight"] = shear.root_weight;
+      t.dataset.attributes["mu_s_log_scale"] = shear.log_scale;
+      t.dataset.attributes["mu_lo"] = shear.mu_lo;
+      t.dataset.attributes["mu_hi"] = shear.mu_hi;
+      t.dataset.attributes["inputs"] = std::string(sc::kInputs);
+      t.dataset.attributes["derived_axes"] = std::string(sc::kDerivedAxes);
+      t.dataset.attributes["lookup"] = "value = table(alpha, s(mu; alpha)); see lookup::microfacet_albedo";
+      tables.push_back(std::move(t));
     }
   }
   // E_avg(alpha): 1-D, float64 (a few hundred bytes: compact and precise at once).
@@ -501,14 +536,14 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
   return tables;
 }
 
-// < 1 s: Beckmann only (~0.2 ms per E at alpha >= 0.5, mu >= 0.1), 7 x 31 grid, 768 error
+// < 1 s: Beckmann only (~0.2 ms per E at alpha >= 0.5, mu >= 0.1), 7 x 35 grid, 768 error
 // samples per table (the conformance test compares maxima over two seeds), 6 + 16 averages.
 Config test_config() {
   Config c;
   c.ggx = false;
   c.alpha_lo = 0.5, c.alpha_hi = 1.0;
   c.mu_lo = 0.1, c.mu_hi = 1.0;
-  c.compact_log_alpha_step = 0.12, c.compact_mu_step = 0.03;
+  c.compact_log_alpha_step = 0.12, c.compact_s_step = 0.03;
   c.precise = false;
   c.avg_log_alpha_step = 0.14;
   c.gbeckmann = false;

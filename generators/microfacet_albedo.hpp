@@ -16,8 +16,9 @@ inline constexpr const char* kSummary =
     "Microfacet directional albedo E(mu), split-sum pair and E_avg (F = 1) for GGX, Beckmann and the generalized "
     "Beckmann NDF, height-correlated and separable G2";
 
-// Resolution as steps in ln(alpha), mu^(1/4) (ln(beta), ln(p)); the defaults are sized for the
-// generation budget (about a minute on 2 cores), README and the report give the measured errors. The precise grid is the compact
+// Resolution as steps in ln(alpha) and the sheared s(mu; alpha) of GGX and Beckmann (ln(beta),
+// ln(p), mu^(1/4) for the generalized Beckmann); README and the report give the measured
+// errors and generation times. The precise grid is the compact
 // one refined precise_refine times in each axis, so every compact node is a precise node and
 // its exact values are computed once (generators/microfacet_albedo.cpp, AlbedoCache).
 // A scene material: one NDF at one roughness (alpha, or beta with kurtosis p).
@@ -29,12 +30,13 @@ struct Material {
 };
 
 struct Config {
-  // GGX and Beckmann on (alpha, mu).
+  // GGX and Beckmann on (alpha, s(mu; alpha)) (lookup/microfacet_albedo_schema.hpp): compact
+  // 91 x 89 float32 (32.4 KB), precise refined 4 times, 361 x 353; E_avg on 289 alpha.
   double alpha_lo = 0.01, alpha_hi = 1, mu_lo = 1e-6, mu_hi = 1;
-  double compact_log_alpha_step = 0.045, compact_mu_step = 0.0145;
-  int precise_refine = 2;
+  double compact_log_alpha_step = 0.0512, compact_s_step = 0.01137;
+  int precise_refine = 4;
   bool compact = true, precise = true, ggx = true, beckmann = true;
-  double avg_log_alpha_step = 0.0625;
+  double avg_log_alpha_step = 0.016;
   // Generalized Beckmann on (p, beta, mu) (compact only), per material on (beta, mu) at the
   // listed p (same beta, mu nodes), E_avg on (p, beta).
   bool gbeckmann = true;
@@ -45,7 +47,7 @@ struct Config {
   // Off-grid error samples (rows x per row); each costs one exact E (0.2-20 ms; the
   // generalized Beckmann 20-80 ms) or one E_avg (~100 E).
   int error_rows = 48, error_per_row = 24;
-  int avg_error_points = 16;
+  int avg_error_points = 32;
   int g_error_rows = 16, g_error_per_row = 8, g_avg_error_rows = 2, g_avg_error_per_row = 1;
   // Non-empty: one 1-D table per material and quantity on mu at its roughness (scenes;
   // microfacet_albedo_scene.cpp), material_mu_points points on mu^(1/4), float64 cubic.

@@ -8,7 +8,7 @@
 //           attributes Eavg_corr, Eavg_sep of its E_corr slice (computed when generating,
 //           not when planning: ~130 E).
 //   grid:   the generic grids with their roughness range widened to hold every material:
-//           the precise (alpha, mu) tables and the E_avg(alpha) tables per NDF used, and the
+//           the precise (alpha, s(mu; alpha)) tables and the E_avg(alpha) tables per NDF used, and the
 //           generalized Beckmann (p, beta, mu) tables with E_avg(p, beta).
 // The cost model (docs/scenes.md) compares bytes and declared generation seconds.
 #include <algorithm>

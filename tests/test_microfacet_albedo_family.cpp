@@ -1,6 +1,7 @@
 // The committed microfacet_albedo tables (tables/microfacet_albedo.h5) against the exact
 // numerics at random points drawn differently from the generator's own measurement (uniform
-// in ln(mu), not mu^(1/4)), the Kulla-Conty lobe built from the tables (white furnace), E_avg
+// in ln(mu), not in the sheared s(mu; alpha)) and at grazing points at the smallest alpha,
+// the Kulla-Conty lobe built from the tables (white furnace), E_avg
 // by Gauss-Legendre against an adaptive Gauss-Kronrod over mu, and the eval CLI.
 #include <doctest/doctest.h>
 
@@ -8,6 +9,8 @@
 #include <filesystem>
 #include <numbers>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
@@ -27,6 +30,8 @@ namespace sc = schema::microfacet_albedo;
 
 namespace {
 const fs::path kDir = fs::path(BRDFTAB_SOURCE_DIR) / "tables";
+// The precise tables' stated error bound checked here (issue 10 asks for 1e-8).
+constexpr double kPreciseTarget = 1e-8;
 }  // namespace
 
 TEST_CASE("microfacet_albedo tables: GGX and Beckmann within their stated errors of the exact quadrature") {
@@ -46,8 +51,16 @@ TEST_CASE("microfacet_albedo tables: GGX and Beckmann within their stated errors
         if (!precise) CHECK(loaded.table.bytes() <= 32 * 1024);
       }
       double worst[4] = {};
-      for (int i = 0; i < 12; ++i) {  // ~2 ms per exact E
-        const double mu = std::pow(1e-6, uni(rng)), alpha = 0.01 * std::pow(100.0, uni(rng));
+      // Accuracy targets (issue 10): compact <= 1e-5 in <= 32 KB, precise <= 1e-8 (stated).
+      for (int q = 0; q < 4; ++q) CHECK(stated[q] <= (precise ? kPreciseTarget : 1e-5));
+      // 12 random points (~2 ms per exact E), then the hardest corner: alpha near 0.01 with
+      // mu 1.3 and 2.7 times alpha (the grazing transition) and mu near 1.
+      std::vector<std::pair<double, double>> points;
+      for (int i = 0; i < 12; ++i) points.emplace_back(std::pow(1e-6, uni(rng)), 0.01 * std::pow(100.0, uni(rng)));
+      for (double alpha : {0.0101, 0.0117})
+        for (double f : {1.3, 2.7}) points.emplace_back(f * alpha, alpha);
+      points.emplace_back(0.9995, 0.0103);
+      for (const auto& [mu, alpha] : points) {
         const numerics::MicrofacetAlbedo e = numerics::microfacet_albedo({kind, alpha}, mu);
         const lookup::MicrofacetAlbedoValues v = lookup::microfacet_albedo(t, mu, alpha);
         worst[0] = std::max(worst[0], std::abs(v.e_corr - e.e_corr));
@@ -68,7 +81,8 @@ TEST_CASE("microfacet_albedo tables: E_avg tables within their stated errors, an
     const lookup::MicrofacetAlbedoTables t = lookup::microfacet_albedo_tables(ts, ndf == 0 ? "ggx" : "beckmann", true);
     const double stated = ts.get(std::string(sc::kFile), std::string(sc::ndf_avg_dataset(ndf, 0).name)).info.attribute_number("max_abs_error", 0);
     REQUIRE(stated > 0);
-    CHECK(stated <= 5e-7);
+    CHECK(stated <= 1e-8);  // issue 10 target
+    CHECK(ts.get(std::string(sc::kFile), std::string(sc::ndf_avg_dataset(ndf, 1).name)).info.attribute_number("max_abs_error", 1) <= 1e-8);
     const numerics::MicrofacetAlbedoAvg ex =
         numerics::microfacet_albedo_avg({ndf == 0 ? numerics::NdfKind::ggx : numerics::NdfKind::beckmann, 0.37});
     CHECK(std::abs(lookup::microfacet_albedo_avg(t, 0.37).eavg_corr - ex.eavg_corr) <= 1.5 * stated);

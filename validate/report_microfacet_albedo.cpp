@@ -47,7 +47,11 @@ void curves(ReportContext& ctx, const std::string& ndf, const lookup::Microfacet
 void error_map(ReportContext& ctx, const std::string& ndf, numerics::NdfKind kind, const lookup::MicrofacetAlbedoTables& tc,
                const lookup::MicrofacetAlbedoTables& tp, int ndf_index) {
   const auto& aa = tp.e[0]->axis(0);
-  const auto& am = tp.e[0]->axis(1);
+  // mu range of the (alpha, s(mu; alpha)) tables: their attributes mu_lo, mu_hi
+  const sc::MuShear sh = tp.shear.value_or(sc::MuShear{});
+  const struct {
+    double x_lo, x_hi;
+  } am{sh.mu_lo, sh.mu_hi};
   std::vector<std::vector<double>> rows;
   double worst_c[4] = {}, worst_p[4] = {};
   const int n = 10;

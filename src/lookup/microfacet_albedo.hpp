@@ -9,11 +9,17 @@
 //   const lookup::MicrofacetAlbedoTables ggx = lookup::microfacet_albedo_tables(ts, "ggx", true);
 //   lookup::MicrofacetAlbedoValues e = lookup::microfacet_albedo(ggx, mu, alpha);
 //   double fms = lookup::kulla_conty_lobe(ggx, mu_o, mu_i, alpha);   // F = 1
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "lookup/microfacet_albedo_schema.hpp"
+#include "lookup/number_format.hpp"
 #include "lookup/table.hpp"
+#include "lookup/table_file.hpp"
 #include "lookup/table_set.hpp"
 
 namespace brdftab::lookup {
@@ -25,17 +31,52 @@ struct MicrofacetAlbedoAvgValues {
   double eavg_corr, eavg_sep;
 };
 
-// The four directional tables (any rank: 2 on (alpha, mu) or (beta, mu) per material, 3 on
-// (p, beta, mu)) and, optionally, the two average tables of one NDF.
+// The four directional tables (any rank: 2 on (alpha, s) for GGX and Beckmann or (beta, mu)
+// per material, 3 on (p, beta, mu)) and, optionally, the two average tables of one NDF.
+// shear: the sheared mu coordinate s(mu; alpha) of the (alpha, s) tables (from their
+// attributes; absent for tables on mu).
 struct MicrofacetAlbedoTables {
   std::array<const Table*, 4> e{};
   std::array<const Table*, 2> avg{};  // null when absent
+  std::optional<schema::microfacet_albedo::MuShear> shear;
 };
 
 namespace detail {
 inline void check_last_axis_mu(const Table& t) {
   if (t.axis(t.rank() - 1).name != schema::microfacet_albedo::kMu.name)
     throw std::invalid_argument("table '" + t.name() + "': last axis is '" + t.axis(t.rank() - 1).name + "', expected 'mu'");
+}
+// The constants of s(mu; alpha) from an (alpha, s) table's attributes (schema comment in
+// lookup/microfacet_albedo_schema.hpp), checked: 0 <= w <= 1, c > 0, 0 < mu_lo < mu_hi <= 1.
+inline schema::microfacet_albedo::MuShear read_mu_shear(const LoadedTable& t) {
+  schema::microfacet_albedo::MuShear m;
+  m.root_weight = t.info.attribute_number("mu_s_root_weight", NAN);
+  m.log_scale = t.info.attribute_number("mu_s_log_scale", NAN);
+  m.mu_lo = t.info.attribute_number("mu_lo", NAN);
+  m.mu_hi = t.info.attribute_number("mu_hi", NAN);
+  if (!(m.root_weight >= 0 && m.root_weight <= 1 && m.log_scale > 0 && std::isfinite(m.log_scale) && m.mu_lo > 0 &&
+        m.mu_lo < m.mu_hi && m.mu_hi <= 1))
+    throw std::invalid_argument("table '" + t.table.name() +
+                                "': attributes mu_s_root_weight, mu_s_log_scale, mu_lo, mu_hi missing or outside "
+                                "0 <= w <= 1, c > 0, 0 < mu_lo < mu_hi <= 1");
+  return m;
+}
+// The s coordinate of (mu, alpha) for an (alpha, s) table: mu and alpha clamped to the table's
+// ranges (policy clamp) or checked (policy error: DomainError naming mu or alpha).
+inline double sheared_coordinate(const schema::microfacet_albedo::MuShear& m, const Table& t, double mu, double alpha,
+                                 OutOfDomain policy) {
+  const Axis& a = t.axis(0);
+  if (policy == OutOfDomain::error) {
+    if (!(mu >= m.mu_lo && mu <= m.mu_hi))
+      throw DomainError("table '" + t.name() + "': mu = " + format_number(mu) + " is outside the table domain [" +
+                        format_number(m.mu_lo) + ", " + format_number(m.mu_hi) + "]");
+    if (!a.contains(alpha))
+      throw DomainError("table '" + t.name() + "': alpha = " + format_number(alpha) + " is outside the table domain [" +
+                        format_number(a.x_lo) + ", " + format_number(a.x_hi) + "]");
+  }
+  mu = std::isnan(mu) ? mu : std::clamp(mu, m.mu_lo, m.mu_hi);
+  alpha = std::isnan(alpha) ? alpha : std::clamp(alpha, a.x_lo, a.x_hi);
+  return schema::microfacet_albedo::s_of_mu(m, mu, alpha);
 }
 }  // namespace detail
 
@@ -64,8 +105,14 @@ inline MicrofacetAlbedoTables microfacet_albedo_tables(TableSet& ts, const std::
   if (k < 0) throw std::invalid_argument("microfacet_albedo_tables: ndf '" + ndf + "' is not ggx, beckmann or gbeckmann");
   for (int q = 0; q < 4; ++q) {
     const auto& d = sc::ndf_dataset(k, precise, q);
-    out.e[static_cast<std::size_t>(q)] = &ts.table(file, std::string(d.name));
-    schema::check_table(*out.e[static_cast<std::size_t>(q)], d);
+    const LoadedTable& loaded = ts.get(file, std::string(d.name));
+    out.e[static_cast<std::size_t>(q)] = &loaded.table;
+    schema::check_table(loaded.table, d);
+    const sc::MuShear m = detail::read_mu_shear(loaded);
+    if (out.shear && !(*out.shear == m))
+      throw std::invalid_argument("table '" + loaded.table.name() + "': its s(mu; alpha) constants differ from '" +
+                                  out.e[0]->name() + "'");
+    out.shear = m;
   }
   for (int q = 0; q < 2; ++q) {
     const auto& d = sc::ndf_avg_dataset(k, q);
@@ -92,11 +139,15 @@ inline MicrofacetAlbedoTables microfacet_albedo_material_tables(TableSet& ts, do
 inline MicrofacetAlbedoValues microfacet_albedo(const MicrofacetAlbedoTables& t, double mu, double alpha,
                                                 double p = 1.0, OutOfDomain policy = OutOfDomain::clamp) {
   std::array<double, 4> v{};
+  // The four (alpha, s) tables share their axes (one generator call): s once.
+  const double s = t.shear ? detail::sheared_coordinate(*t.shear, *t.e[0], mu, alpha, policy) : 0.0;
   for (std::size_t q = 0; q < 4; ++q) {
     const Table& tab = *t.e[q];
     if (tab.rank() == 3) {
       const double x[3] = {p, alpha, mu};
       v[q] = tab.eval(x, policy);
+    } else if (t.shear) {
+      v[q] = tab.eval2(alpha, s, policy);
     } else {
       v[q] = tab.eval2(alpha, mu, policy);
     }

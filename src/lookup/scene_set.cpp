@@ -1,6 +1,7 @@
 #include "lookup/scene_set.hpp"
 
 #include <fstream>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -122,6 +123,7 @@ struct SceneMaterialHandle::Impl {
   const Table* mf[4] = {nullptr, nullptr, nullptr, nullptr};  // E_corr, E_sep, split_scale, split_bias
   const Table* mf_avg[2] = {nullptr, nullptr};                // Eavg_corr, Eavg_sep (grid form)
   double eavg[2] = {NAN, NAN};                                 // slices: attributes of the E_corr slice
+  std::optional<schema::microfacet_albedo::MuShear> mf_shear;  // grids on (alpha, s(mu; alpha))
   double c = NAN, kd_value = NAN;
   std::map<std::string, const LoadedTable*> composite;  // role -> per-material table
   const LoadedTable* brdf_modes = nullptr;  // ls: main and corner zone of the BRDF modes
@@ -204,6 +206,9 @@ SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tab
           }
         } else if (t.table.rank() == 3) {
           schema::check_table(t.table, mf::kGBeckmann3d[q]);
+        } else if (t.table.rank() == 2 && t.table.axis(1).name == mf::kS.name) {
+          // GGX / Beckmann grid on (alpha, s(mu; alpha)): the constants of s from its attributes
+          m.mf_shear = detail::read_mu_shear(t);
         } else {
           detail::check_last_axis_mu(t.table);
         }
@@ -356,6 +361,9 @@ MicrofacetAlbedoValues SceneMaterialHandle::microfacet_albedo(double mu) const {
     if (!t) missing(e_, std::string(schema::microfacet_albedo::kQuantities[static_cast<std::size_t>(q)]));
     if (t->rank() == 1) {
       v[q] = t->eval1(mu);
+    } else if (t->rank() == 2 && m.mf_shear) {
+      const double alpha = param("alpha");
+      v[q] = t->eval2(alpha, detail::sheared_coordinate(*m.mf_shear, *t, mu, alpha, OutOfDomain::clamp));
     } else if (t->rank() == 2) {
       v[q] = t->eval2(param("alpha"), mu);
     } else {

@@ -216,6 +216,12 @@ constexpr AttributeRule kDatasetRules[] = {
     // microfacet_albedo scene slices: the material's exact E_avg (attributes of its E_corr slice)
     {"Eavg_corr", Kind::number, 0, 1, false},
     {"Eavg_sep", Kind::number, 0, 1, false},
+    // microfacet_albedo GGX and Beckmann grids: constants of the sheared s(mu; alpha)
+    // (lookup/microfacet_albedo_schema.hpp; lookup::detail::read_mu_shear checks them together)
+    {"mu_s_root_weight", Kind::number, 0, 1, false},
+    {"mu_s_log_scale", Kind::number, 0, 1e12, true},
+    {"mu_lo", Kind::number, 0, 1, true},
+    {"mu_hi", Kind::number, 0, 1, true},
     {"ls_kd", Kind::number, 0, 1, false},
 };
 constexpr AttributeRule kFileRules[] = {
