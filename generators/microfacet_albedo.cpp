@@ -110,6 +110,8 @@ Config read_config(const nlohmann::json& entry) {
       c.material_p.push_back(p);
     }
   }
+  c.g_material_log_beta_step = r.number("g_material_log_beta_step", c.g_material_log_beta_step, 1e-3, 10.0);
+  c.g_material_mu_step = r.number("g_material_mu_step", c.g_material_mu_step, 1e-3, 20.0);
   c.g_avg_log_beta_step = r.number("g_avg_log_beta_step", c.g_avg_log_beta_step, 1e-3, 10.0);
   c.g_avg_log_p_step = r.number("g_avg_log_p_step", c.g_avg_log_p_step, 1e-3, 10.0);
   c.error_rows = static_cast<int>(r.integer("error_rows", c.error_rows, 1, 100000));
@@ -146,6 +148,8 @@ nlohmann::json to_json_grids(const Config& c) {
           {"g_log_p_step", c.g_log_p_step},
           {"g_mu_step", c.g_mu_step},
           {"material_p", c.material_p},
+          {"g_material_log_beta_step", c.g_material_log_beta_step},
+          {"g_material_mu_step", c.g_material_mu_step},
           {"g_avg_log_beta_step", c.g_avg_log_beta_step},
           {"g_avg_log_p_step", c.g_avg_log_p_step},
           {"error_rows", c.error_rows},
@@ -387,14 +391,17 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
     };
     tables.push_back(finish(std::move(spec), row, ctx, q == 0 ? kGValueSeconds : 0.0));
   }
-  // Per material: the same (beta, mu) nodes at a fixed p (cache hits where p is a p node).
+  // Per material: (beta, mu) at a fixed p on its own finer grid (2-D: far more nodes per
+  // axis in the same size; cache hits where p is a p node and the nodes coincide).
+  const int nb_m = log_points(c.beta_lo, c.beta_hi, c.g_material_log_beta_step);
+  const int nm_m = mu_points(c.mu_lo, c.mu_hi, c.g_material_mu_step);
   for (double p : c.material_p) {
     for (int q = 0; q < 4; ++q) {
       TableSpec spec;
       spec.dataset = sc::material_dataset(p, q);
       spec.quantity = std::string(sc::kGBeckmannMaterial.quantity) + std::string(sc::kQuantities[static_cast<std::size_t>(q)]) +
                       " at p = " + lookup::format_number(p);
-      spec.axes = {axis_spec(sc::kBeta, c.beta_lo, c.beta_hi, nb), axis_spec(sc::kMu, c.mu_lo, c.mu_hi, nm)};
+      spec.axes = {axis_spec(sc::kBeta, c.beta_lo, c.beta_hi, nb_m), axis_spec(sc::kMu, c.mu_lo, c.mu_hi, nm_m)};
       spec.storage = lookup::Storage::float32;
       spec.domain = bm + " (p = " + lookup::format_number(p) + ")";
       spec.method = kMethodE;

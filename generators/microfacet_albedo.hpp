@@ -36,11 +36,12 @@ struct Config {
   bool compact = true, precise = true, ggx = true, beckmann = true;
   double avg_log_alpha_step = 0.0625;
   // Generalized Beckmann on (p, beta, mu) (compact only), per material on (beta, mu) at the
-  // listed p (same beta, mu nodes), E_avg on (p, beta).
+  // listed p (its own, finer beta and mu steps), E_avg on (p, beta).
   bool gbeckmann = true;
   double beta_lo = 0.05, beta_hi = 1, p_lo = 0.5, p_hi = 2;
   double g_log_beta_step = 0.5, g_log_p_step = 0.35, g_mu_step = 0.1;
   std::vector<double> material_p = {0.5, 2.0};
+  double g_material_log_beta_step = 0.05, g_material_mu_step = 0.0154;
   double g_avg_log_beta_step = 1.0, g_avg_log_p_step = 1.4;
   // Off-grid error samples (rows x per row); each costs one exact E (0.2-20 ms; the
   // generalized Beckmann 20-80 ms) or one E_avg (~100 E).
