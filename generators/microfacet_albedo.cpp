@@ -7,8 +7,9 @@
 // reasons): lookup/microfacet_albedo_schema.hpp.
 //
 // Cost. One exact E costs 0.2-20 ms (GGX and Beckmann; most near grazing and small alpha)
-// and 20-80 ms for the generalized Beckmann (its Lambda is a quadrature, needed at every
-// outer node); one E_avg costs ~100-160 E. The four quantities of one grid point come from
+// and 1-20 ms for the generalized Beckmann (its Lambda, a quadrature needed at every outer
+// node, comes from a per-p interpolant: numerics/smith_gbeckmann_lambda_interp.hpp; most of
+// the cost is now the inner azimuth integral at p < 1); one E_avg costs ~100-160 E. The four quantities of one grid point come from
 // one call, and the compact grid is a sub-grid of the precise one: AlbedoCache below keeps
 // every computed E, so each distinct (roughness, p, mu) is computed once for all eight tables
 // of an NDF, including the off-grid error samples (same seed and ranges for every table, so
@@ -272,10 +273,11 @@ int mu_points(double lo, double hi, double step) {
 }
 
 // Declared single-core cost per exact E (dry runs, scene cost model: reproducible
-// decisions): GGX and Beckmann 0.2-20 ms, ~3 ms typical; generalized Beckmann 20-80 ms. One
+// decisions): GGX and Beckmann 0.2-20 ms, ~3 ms typical; generalized Beckmann 1-20 ms, ~5 ms
+// typical (its Lambda from the per-p interpolant; 20-80 ms with the quadrature Lambda). One
 // E_avg ~ 130 E. Values are shared through AlbedoCache: the first of the four quantities'
 // tables pays (and the precise before the compact), the others cost nothing.
-constexpr double kValueSeconds = 3e-3, kGValueSeconds = 50e-3, kAvgPerValue = 130;
+constexpr double kValueSeconds = 3e-3, kGValueSeconds = 5e-3, kAvgPerValue = 130;
 
 // Targeted error points: where random points rarely land and the tables are worst, the
 // smallest roughness (one-sided stencils at the range's edge) with mu a few times the

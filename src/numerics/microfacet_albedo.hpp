@@ -15,7 +15,8 @@
 // Lambda_i is evaluated once per outer node; the inner integral needs only D. The generalized
 // Beckmann's Lambda is a quadrature (~16 us): by default it comes from the per-p interpolant
 // (smith_gbeckmann_lambda_interp.hpp, ~1e-13 relative, built once per p and shared), which
-// takes E from 20-80 ms to MEASURED; LambdaMethod::quadrature keeps the quadrature (the
+// takes E from 8-30 ms to 1-20 ms (the rest is the inner integral; ~2.2x on
+// the bench sample, up to 12x at p >= 1); LambdaMethod::quadrature keeps the quadrature (the
 // reference for the interpolated path). The outer is adaptive
 // Gauss-Kronrod on panels graded about the peak (scale alpha) and about grazing; the inner a
 // trapezoidal rule after a Moebius map of the azimuth onto the peak (GGX: its constant

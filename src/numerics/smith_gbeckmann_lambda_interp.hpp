@@ -15,7 +15,7 @@
 // M1 = Gamma(3/(2p)) / (pi Gamma(1/p))), y ~ const + (5p - 2) x for a -> 0 (Laplace:
 // Lambda ~ nu^2 (N p)^{-5/2} e^{-N}), with corrections exponentially small in x. Such a
 // function is resolved by piecewise Chebyshev interpolation in x to rounding level with few
-// pieces (measured: 3-25 pieces of 16 nodes for p in [0.1, 10]).
+// pieces (measured: 12-25 pieces of 16 nodes for p in [0.1, 10]).
 // Range: x in [ln a_lo, ln 1e5], a_lo where N = 800 (below, Lambda < 1e-320 and the exact
 // function returns 0; so does this); above a = 1e5 both use the grazing expansion.
 // Construction: each piece's 16 Chebyshev coefficients from exact y at the Chebyshev points
@@ -24,7 +24,7 @@
 // which is the relative error of Lambda, is ~1e-13 (measured against the quadrature at random
 // off-node points: tests/test_smith_gbeckmann_lambda_interp.cpp). Evaluation: Clenshaw's
 // recurrence (boost::math::chebyshev_clenshaw_recurrence).
-// Cost: 150-800 exact Lambda values, 5-100 ms per p.
+// Cost: 370-800 exact Lambda values, 5-100 ms per p.
 #include <cstddef>
 #include <memory>
 #include <vector>
