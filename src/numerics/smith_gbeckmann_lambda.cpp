@@ -125,7 +125,7 @@ double smith_gbeckmann_lambda(double a, double p) {
   if (a == 0.0) return 0.0;
   if (std::isinf(a)) return std::numeric_limits<double>::infinity();
   if (a > kSmithGBeckmannGrazingA) return lambda_grazing(a, p);
-  const double n_exp = std::pow(a, -2.0 * p);
+  const double n_exp = std::pow(1.0 / a, 2.0 * p);  // N = nu^{2p}
   // Lambda <= exp(-N) * nu^2 * (N p)^{-5/2} * O(1) < 1e-320 beyond N = 800.
   if (n_exp > kSmithGBeckmannUnderflowN) return 0.0;
   return lambda_times_exp_n(a, p, n_exp) * std::exp(-n_exp);
@@ -135,7 +135,7 @@ double smith_gbeckmann_log_lambda_scaled(double a, double p) {
   require_closed("a", a, 0.0, kSmithGBeckmannGrazingA, "(0, 1e5]");
   if (!(a > 0.0)) throw_domain_error("a", a, "(0, 1e5]");
   check_p(p);
-  const double n_exp = std::pow(a, -2.0 * p);
+  const double n_exp = std::pow(1.0 / a, 2.0 * p);
   if (std::isinf(n_exp)) throw_domain_error("a", a, "(0, 1e5] with a^(-2p) finite");
   return std::log(lambda_times_exp_n(a, p, n_exp));
 }

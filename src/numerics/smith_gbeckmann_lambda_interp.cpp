@@ -64,7 +64,7 @@ double SmithGBeckmannLambdaInterp::lambda(double a) const {
   require_at_least("a", a, 0.0, "[0, +inf]");
   if (a == 0.0) return 0.0;
   if (a > kSmithGBeckmannGrazingA) return smith_gbeckmann_lambda(a, p_);  // closed-form expansion
-  const double n_exp = std::pow(a, -2.0 * p_);
+  const double n_exp = std::pow(1.0 / a, 2.0 * p_);  // N as smith_gbeckmann_lambda forms it
   if (n_exp > kSmithGBeckmannUnderflowN) return 0.0;
   const double x = std::clamp(std::log(a), x_lo_, x_hi_);
   // The piece holding x: the first whose upper end is >= x.
