@@ -7,8 +7,9 @@
 // reasons): lookup/microfacet_albedo_schema.hpp.
 //
 // Cost. One exact E costs 0.2-20 ms (GGX and Beckmann; most near grazing and small alpha)
-// and 20-80 ms for the generalized Beckmann (its Lambda is a quadrature, needed at every
-// outer node); one E_avg costs ~100-160 E. The four quantities of one grid point come from
+// and 1-20 ms for the generalized Beckmann (its Lambda, a quadrature needed at every outer
+// node, comes from a per-p interpolant: numerics/smith_gbeckmann_lambda_interp.hpp; most of
+// the cost is now the inner azimuth integral at p < 1); one E_avg costs ~100-160 E. The four quantities of one grid point come from
 // one call, and the compact grid is a sub-grid of the precise one: AlbedoCache below keeps
 // every computed E, so each distinct (roughness, p, mu) is computed once for all eight tables
 // of an NDF, including the off-grid error samples (same seed and ranges for every table, so
@@ -110,6 +111,8 @@ Config read_config(const nlohmann::json& entry) {
       c.material_p.push_back(p);
     }
   }
+  c.g_material_log_beta_step = r.number("g_material_log_beta_step", c.g_material_log_beta_step, 1e-3, 10.0);
+  c.g_material_mu_step = r.number("g_material_mu_step", c.g_material_mu_step, 1e-3, 20.0);
   c.g_avg_log_beta_step = r.number("g_avg_log_beta_step", c.g_avg_log_beta_step, 1e-3, 10.0);
   c.g_avg_log_p_step = r.number("g_avg_log_p_step", c.g_avg_log_p_step, 1e-3, 10.0);
   c.error_rows = static_cast<int>(r.integer("error_rows", c.error_rows, 1, 100000));
@@ -146,6 +149,8 @@ nlohmann::json to_json_grids(const Config& c) {
           {"g_log_p_step", c.g_log_p_step},
           {"g_mu_step", c.g_mu_step},
           {"material_p", c.material_p},
+          {"g_material_log_beta_step", c.g_material_log_beta_step},
+          {"g_material_mu_step", c.g_material_mu_step},
           {"g_avg_log_beta_step", c.g_avg_log_beta_step},
           {"g_avg_log_p_step", c.g_avg_log_p_step},
           {"error_rows", c.error_rows},
@@ -282,10 +287,11 @@ int mu_points(double lo, double hi, double step) {
 }
 
 // Declared single-core cost per exact E (dry runs, scene cost model: reproducible
-// decisions): GGX and Beckmann 0.2-20 ms, ~3 ms typical; generalized Beckmann 20-80 ms. One
+// decisions): GGX and Beckmann 0.2-20 ms, ~3 ms typical; generalized Beckmann 1-20 ms, ~5 ms
+// typical (its Lambda from the per-p interpolant; 20-80 ms with the quadrature Lambda). One
 // E_avg ~ 130 E. Values are shared through AlbedoCache: the first of the four quantities'
 // tables pays (and the precise before the compact), the others cost nothing.
-constexpr double kValueSeconds = 3e-3, kGValueSeconds = 50e-3, kAvgPerValue = 130;
+constexpr double kValueSeconds = 3e-3, kGValueSeconds = 5e-3, kAvgPerValue = 130;
 
 // Targeted error points: where random points rarely land and the tables are worst, the
 // smallest roughness (one-sided stencils at the range's edge) with mu a few times the
@@ -422,14 +428,17 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
     };
     tables.push_back(finish(std::move(spec), row, ctx, q == 0 ? kGValueSeconds : 0.0));
   }
-  // Per material: the same (beta, mu) nodes at a fixed p (cache hits where p is a p node).
+  // Per material: (beta, mu) at a fixed p on its own finer grid (2-D: far more nodes per
+  // axis in the same size; cache hits where p is a p node and the nodes coincide).
+  const int nb_m = log_points(c.beta_lo, c.beta_hi, c.g_material_log_beta_step);
+  const int nm_m = mu_points(c.mu_lo, c.mu_hi, c.g_material_mu_step);
   for (double p : c.material_p) {
     for (int q = 0; q < 4; ++q) {
       TableSpec spec;
       spec.dataset = sc::material_dataset(p, q);
       spec.quantity = std::string(sc::kGBeckmannMaterial.quantity) + std::string(sc::kQuantities[static_cast<std::size_t>(q)]) +
                       " at p = " + lookup::format_number(p);
-      spec.axes = {axis_spec(sc::kBeta, c.beta_lo, c.beta_hi, nb), axis_spec(sc::kMu, c.mu_lo, c.mu_hi, nm)};
+      spec.axes = {axis_spec(sc::kBeta, c.beta_lo, c.beta_hi, nb_m), axis_spec(sc::kMu, c.mu_lo, c.mu_hi, nm_m)};
       spec.storage = lookup::Storage::float32;
       spec.domain = bm + " (p = " + lookup::format_number(p) + ")";
       spec.method = kMethodE;

@@ -1,8 +1,8 @@
 // Scene hook of microfacet_albedo: the directional albedo E(mu), the split-sum pair and E_avg
 // of each material with a microfacet lobe: "ggx" and "beckmann" (alpha) and
 // "generalized_beckmann" (p, beta). Not "ghs": the two-scale model's energy is its own
-// family's business (hp), and a generalized Beckmann slice costs ~270 exact E of 20-80 ms
-// (~15 s per material) that a GHS scene does not ask for.
+// family's business (hp), and a generalized Beckmann slice costs ~270 exact E of 1-20 ms
+// (~2-5 s per material) that a GHS scene does not ask for.
 //   slices: four 1-D tables on mu per material at its roughness (material_mu_points float64,
 //           4 x 2.5 KB), no interpolation across roughness; the material's exact E_avg as
 //           attributes Eavg_corr, Eavg_sep of its E_corr slice (computed when generating,

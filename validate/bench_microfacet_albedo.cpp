@@ -12,6 +12,8 @@
 #include "lookup/microfacet_albedo.hpp"
 #include "lookup/table_set.hpp"
 #include "numerics/microfacet_albedo.hpp"
+#include "numerics/smith_gbeckmann_lambda.hpp"
+#include "numerics/smith_gbeckmann_lambda_interp.hpp"
 #include "validate/bench.hpp"
 
 namespace brdftab::validate::microfacet_albedo {
@@ -65,6 +67,34 @@ void register_benchmarks(const BenchContext& ctx) {
       } catch (const std::exception&) {
       }
     }
+  }
+  // Generalized Beckmann E side by side: Lambda from the per-p interpolant (default) and from
+  // the quadrature at every outer node (the former cost); (mu, beta) from the points above
+  // (alpha in [0.01, 1] used as beta), p in [0.5, 2]. The interpolants are built before timing.
+  for (auto [name, method] : {std::pair{"gbeckmann", numerics::LambdaMethod::interpolated},
+                              std::pair{"gbeckmann_quadrature_lambda", numerics::LambdaMethod::quadrature}}) {
+    benchmark::RegisterBenchmark(("microfacet_albedo/exact/" + std::string(name)).c_str(), [pts, method](benchmark::State& state) {
+      const auto p_of = [](std::size_t i) { return 0.5 * std::pow(4.0, (i % 5) / 4.0); };
+      for (std::size_t i = 0; i < 8; ++i) numerics::smith_gbeckmann_lambda_interp(p_of(i));
+      for (auto _ : state)
+        for (std::size_t i = 0; i < 8; ++i)  // 8 points: ms each
+          benchmark::DoNotOptimize(numerics::microfacet_albedo({numerics::NdfKind::gbeckmann, (*pts)[2 * i + 1], p_of(i)},
+                                                               (*pts)[2 * i], method));
+      per_call(state, 8);
+    })->Iterations(1);
+  }
+  // Lambda alone: interpolant vs quadrature, a log-uniform in [1e-2, 1e3], p = 0.8.
+  for (bool interp : {true, false}) {
+    benchmark::RegisterBenchmark(interp ? "microfacet_albedo/lambda/gbeckmann_interpolated" : "microfacet_albedo/lambda/gbeckmann_quadrature",
+                                 [interp](benchmark::State& state) {
+                                   const auto li = numerics::smith_gbeckmann_lambda_interp(0.8);
+                                   for (auto _ : state)
+                                     for (int i = 0; i < 64; ++i) {
+                                       const double a = std::pow(10.0, -2.0 + 5.0 * i / 63.0);
+                                       benchmark::DoNotOptimize(interp ? li->lambda(a) : numerics::smith_gbeckmann_lambda(a, 0.8));
+                                     }
+                                   per_call(state, 64);
+                                 });
   }
   register_generation_benchmark("microfacet_albedo/generate/test_tables", "microfacet_albedo",
                                 gen::find_family("microfacet_albedo")->test_entry());

@@ -91,11 +91,11 @@ bool mobius_trapezoid(const F& f, double lambda, double rel_tol, double scale, s
 //   cos(theta_d)    = i.h = |i + o| / 2 = sqrt(|i_xy + o_xy|^2 + (mu_i + mu_o)^2) / 2
 // with s_i - s_o = (mu_o - mu_i)(mu_o + mu_i) / (s_i + s_o).
 namespace {
-MicrofacetAlbedo albedo_impl(const MicrofacetNdf& ndf, const NdfEvaluator& dfun, double mu_o) {
+MicrofacetAlbedo albedo_impl(const MicrofacetNdf& ndf, const NdfEvaluator& dfun, const LambdaEvaluator& lambda_of, double mu_o) {
   require_closed("mu", mu_o, kAlbedoMuMin, 1.0, "[1e-6, 1]");
   const double alpha = ndf.alpha;
   const double s_o = std::sqrt((1.0 - mu_o) * (1.0 + mu_o));
-  const double lambda_o = ndf_lambda(ndf, mu_o);
+  const double lambda_o = lambda_of(mu_o);
   const double g1_o = 1.0 / (1.0 + lambda_o);
 
   // Inner: {Integral D dpsi, Integral D Delta dpsi} over [0, pi].
@@ -153,7 +153,7 @@ MicrofacetAlbedo albedo_impl(const MicrofacetNdf& ndf, const NdfEvaluator& dfun,
   // Outer: {G2_corr K, G2_sep K, G2_corr K_Delta} / (2 mu_o).
   const auto outer = [&](double mu_i) -> std::array<double, 3> {
     if (mu_i <= 0.0) return {0.0, 0.0, 0.0};
-    const double lambda_i = ndf_lambda(ndf, mu_i);
+    const double lambda_i = lambda_of(mu_i);
     if (std::isinf(lambda_i)) return {0.0, 0.0, 0.0};
     const std::array<double, 2> kk = inner(mu_i);
     const double corr = 1.0 / (1.0 + lambda_i + lambda_o), sep = g1_o / (1.0 + lambda_i);
@@ -172,16 +172,19 @@ MicrofacetAlbedo albedo_impl(const MicrofacetNdf& ndf, const NdfEvaluator& dfun,
 }
 }  // namespace
 
-MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o) {
+MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o, LambdaMethod lambda) {
   const NdfEvaluator dfun(ndf);  // checks ndf
-  return albedo_impl(ndf, dfun, mu_o);
+  require_closed("mu", mu_o, kAlbedoMuMin, 1.0, "[1e-6, 1]");  // before the Lambda set-up
+  return albedo_impl(ndf, dfun, LambdaEvaluator(ndf, lambda), mu_o);
 }
 
-std::vector<MicrofacetAlbedo> microfacet_albedo_row(const MicrofacetNdf& ndf, const std::vector<double>& mus) {
+std::vector<MicrofacetAlbedo> microfacet_albedo_row(const MicrofacetNdf& ndf, const std::vector<double>& mus,
+                                                    LambdaMethod lambda) {
   const NdfEvaluator dfun(ndf);
+  const LambdaEvaluator lambda_of(ndf, lambda);
   std::vector<MicrofacetAlbedo> out;
   out.reserve(mus.size());
-  for (double mu : mus) out.push_back(albedo_impl(ndf, dfun, mu));
+  for (double mu : mus) out.push_back(albedo_impl(ndf, dfun, lambda_of, mu));
   return out;
 }
 
@@ -221,12 +224,12 @@ MicrofacetAlbedoAvg microfacet_albedo_avg_from_nodes(const std::vector<double>& 
   return {corr, sep};
 }
 
-MicrofacetAlbedoAvg microfacet_albedo_avg(const MicrofacetNdf& ndf) {
+MicrofacetAlbedoAvg microfacet_albedo_avg(const MicrofacetNdf& ndf, LambdaMethod lambda) {
   check_ndf(ndf);
   std::vector<double> w;
   std::vector<double> mus = microfacet_albedo_avg_nodes(ndf.alpha, &w);
   mus.push_back(kAlbedoMuMin);
-  std::vector<MicrofacetAlbedo> e = microfacet_albedo_row(ndf, mus);
+  std::vector<MicrofacetAlbedo> e = microfacet_albedo_row(ndf, mus, lambda);
   const MicrofacetAlbedo e_min = e.back();
   e.pop_back();
   mus.pop_back();

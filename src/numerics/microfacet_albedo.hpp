@@ -12,8 +12,12 @@
 // Method (the primary, microfacet_albedo): integrate over the incoming direction, outer over
 // mu_i, inner over the relative azimuth psi = pi - phi (psi = 0 is the mirror direction):
 //   E = Integral_0^1 G2(mu_i, mu_o) / (2 mu_o) [Integral_0^pi D(h(mu_i, psi)) dpsi] dmu_i.
-// Lambda_i is evaluated once per outer node (the generalized Beckmann's quadrature Lambda
-// dominates its cost: 20-80 ms per E); the inner integral needs only D. The outer is adaptive
+// Lambda_i is evaluated once per outer node; the inner integral needs only D. The generalized
+// Beckmann's Lambda is a quadrature (~16 us): by default it comes from the per-p interpolant
+// (smith_gbeckmann_lambda_interp.hpp, ~1e-13 relative, built once per p and shared), which
+// takes E from 8-30 ms to 1-20 ms (the rest is the inner integral; ~2.2x on
+// the bench sample, up to 12x at p >= 1); LambdaMethod::quadrature keeps the quadrature (the
+// reference for the interpolated path). The outer is adaptive
 // Gauss-Kronrod on panels graded about the peak (scale alpha) and about grazing; the inner a
 // trapezoidal rule after a Moebius map of the azimuth onto the peak (GGX: its constant
 // background alpha^2 / pi split off), falling back to adaptive Gauss-Kronrod where 256 nodes
@@ -36,9 +40,12 @@ struct MicrofacetAlbedo {
 
 inline constexpr double kAlbedoMuMin = 1e-6;
 
-MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o);
-// A row at one roughness: the NDF set up once (NdfEvaluator), then each mu.
-std::vector<MicrofacetAlbedo> microfacet_albedo_row(const MicrofacetNdf& ndf, const std::vector<double>& mus);
+MicrofacetAlbedo microfacet_albedo(const MicrofacetNdf& ndf, double mu_o,
+                                   LambdaMethod lambda = LambdaMethod::interpolated);
+// A row at one roughness: the NDF and Lambda set up once (NdfEvaluator, LambdaEvaluator),
+// then each mu.
+std::vector<MicrofacetAlbedo> microfacet_albedo_row(const MicrofacetNdf& ndf, const std::vector<double>& mus,
+                                                    LambdaMethod lambda = LambdaMethod::interpolated);
 
 // Hemispherical averages E_avg = 2 Integral_0^1 E(mu) mu dmu (correlated and separable).
 struct MicrofacetAlbedoAvg {
@@ -48,7 +55,7 @@ struct MicrofacetAlbedoAvg {
 // Composite Gauss-Legendre in mu on panels graded geometrically (ratio 4) from alpha/64 down
 // to mu_min = 1e-6 and up to 1 (microfacet_albedo.cpp says why); 1e-10 absolute (checked
 // against an adaptive Gauss-Kronrod over mu in tests/test_microfacet_energy.cpp).
-MicrofacetAlbedoAvg microfacet_albedo_avg(const MicrofacetNdf& ndf);
+MicrofacetAlbedoAvg microfacet_albedo_avg(const MicrofacetNdf& ndf, LambdaMethod lambda = LambdaMethod::interpolated);
 // The same in parts, for callers that evaluate E on the nodes themselves (a table
 // generator sharing rows): the nodes for a roughness alpha (and their weights), then the
 // average from E at those nodes and at mu_min.

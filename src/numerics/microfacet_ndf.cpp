@@ -9,6 +9,7 @@
 #include "numerics/domain_check.hpp"
 #include "numerics/smith_beckmann_closed_form.hpp"
 #include "numerics/smith_gbeckmann_lambda.hpp"
+#include "numerics/smith_gbeckmann_lambda_interp.hpp"
 #include "numerics/smith_gbeckmann_ndf.hpp"
 
 namespace brdftab::numerics {
@@ -121,6 +122,19 @@ double ndf_lambda(const MicrofacetNdf& ndf, double mu) {
     case NdfKind::gbeckmann: return smith_gbeckmann_lambda(a, ndf.p);
   }
   return 0.0;
+}
+
+LambdaEvaluator::LambdaEvaluator(const MicrofacetNdf& ndf, LambdaMethod method) : ndf_(ndf) {
+  check_ndf(ndf);
+  if (ndf.kind == NdfKind::gbeckmann && method == LambdaMethod::interpolated) interp_ = smith_gbeckmann_lambda_interp(ndf.p);
+}
+
+double LambdaEvaluator::operator()(double mu) const {
+  if (!interp_) return ndf_lambda(ndf_, mu);
+  if (mu <= 0.0) return std::numeric_limits<double>::infinity();
+  if (mu >= 1.0) return 0.0;
+  // a = beta tan(theta), as in ndf_lambda.
+  return interp_->lambda(ndf_.alpha * std::sqrt((1.0 - mu) * (1.0 + mu)) / mu);
 }
 
 double ndf_g1(const MicrofacetNdf& ndf, double mu) {

@@ -11,6 +11,7 @@
 // Integral P rho drho dphi = 1:
 //   GGX 1 / (pi (1 + rho^2)^2), Beckmann exp(-rho^2) / pi,
 //   generalized Beckmann p / (pi Gamma(1/p)) exp(-rho^(2p)) (Eq. 39 with beta = 1).
+#include <memory>
 #include <string>
 
 namespace brdftab::numerics {
@@ -52,5 +53,23 @@ double ndf_scaled_slope_density(const MicrofacetNdf& ndf, double rho);
 double ndf_lambda(const MicrofacetNdf& ndf, double mu);
 // G1 = 1 / (1 + Lambda) (0 at mu = 0).
 double ndf_g1(const MicrofacetNdf& ndf, double mu);
+
+class SmithGBeckmannLambdaInterp;
+// How Lambda of the generalized Beckmann is evaluated: the per-p interpolant
+// (smith_gbeckmann_lambda_interp.hpp, ~1e-13 relative, ~0.1 us) or the quadrature itself
+// (smith_gbeckmann_lambda, ~16 us). GGX and Beckmann are closed forms either way.
+enum class LambdaMethod { interpolated, quadrature };
+// Lambda(mu) of one NDF with the set-up done once (the generalized Beckmann's interpolant for
+// its p fetched from the shared cache): same values as ndf_lambda, to ~1e-13 relative with
+// LambdaMethod::interpolated, identical with LambdaMethod::quadrature.
+class LambdaEvaluator {
+ public:
+  explicit LambdaEvaluator(const MicrofacetNdf& ndf, LambdaMethod method = LambdaMethod::interpolated);
+  double operator()(double mu) const;
+
+ private:
+  MicrofacetNdf ndf_;
+  std::shared_ptr<const SmithGBeckmannLambdaInterp> interp_;  // generalized Beckmann, interpolated only
+};
 
 }  // namespace brdftab::numerics

@@ -102,16 +102,12 @@ double smith_gbeckmann_p2_at_zero(double p) {
 // series near 0 (it is ~ s^3/3); s scaled by sigma, where the exponent has grown by 1:
 // N ((1 + sigma^2)^p - 1) = 1, i.e. sigma ~ 1/nu for N << 1, ~ 1/sqrt(N p) for N >> 1.
 // Check: p = 1 gives the Beckmann closed form (tests).
-double smith_gbeckmann_lambda(double a, double p) {
-  require_at_least("a", a, 0.0, "[0, +inf]");
-  check_p(p);
-  if (a == 0.0) return 0.0;
-  if (std::isinf(a)) return std::numeric_limits<double>::infinity();
-  if (a > 1e5) return lambda_grazing(a, p);
+namespace {
+// Lambda e^N = 2 C nu^2 Integral_0^inf ... ds (the derivation above), N = nu^{2p} = a^{-2p}:
+// finite and free of underflow for every a in (0, 1e5] (the interpolant in
+// smith_gbeckmann_lambda_interp.hpp samples its logarithm where Lambda itself underflows).
+double lambda_times_exp_n(double a, double p, double n_exp) {
   const double nu = 1.0 / a;
-  const double n_exp = std::pow(nu, 2.0 * p);
-  // Lambda <= exp(-N) * nu^2 * (N p)^{-5/2} * O(1) < 1e-320 beyond N = 800.
-  if (n_exp > 800.0) return 0.0;
   const double sigma = std::sqrt(std::expm1(std::log1p(1.0 / n_exp) / p));
   const auto f = [&](double x) {
     const double s = sigma * x;
@@ -119,7 +115,29 @@ double smith_gbeckmann_lambda(double a, double p) {
     return s * s_minus_atan(s) * std::exp(-excess);
   };
   const double integral = sigma * integrate_half_line(f, 1e-13);
-  return 2.0 * slope_constant(p) * nu * nu * integral * std::exp(-n_exp);
+  return 2.0 * slope_constant(p) * nu * nu * integral;
+}
+}  // namespace
+
+double smith_gbeckmann_lambda(double a, double p) {
+  require_at_least("a", a, 0.0, "[0, +inf]");
+  check_p(p);
+  if (a == 0.0) return 0.0;
+  if (std::isinf(a)) return std::numeric_limits<double>::infinity();
+  if (a > kSmithGBeckmannGrazingA) return lambda_grazing(a, p);
+  const double n_exp = std::pow(1.0 / a, 2.0 * p);  // N = nu^{2p}
+  // Lambda <= exp(-N) * nu^2 * (N p)^{-5/2} * O(1) < 1e-320 beyond N = 800.
+  if (n_exp > kSmithGBeckmannUnderflowN) return 0.0;
+  return lambda_times_exp_n(a, p, n_exp) * std::exp(-n_exp);
+}
+
+double smith_gbeckmann_log_lambda_scaled(double a, double p) {
+  require_closed("a", a, 0.0, kSmithGBeckmannGrazingA, "(0, 1e5]");
+  if (!(a > 0.0)) throw_domain_error("a", a, "(0, 1e5]");
+  check_p(p);
+  const double n_exp = std::pow(1.0 / a, 2.0 * p);
+  if (std::isinf(n_exp)) throw_domain_error("a", a, "(0, 1e5] with a^(-2p) finite");
+  return std::log(lambda_times_exp_n(a, p, n_exp));
 }
 
 double smith_gbeckmann_g1(double a, double p) {

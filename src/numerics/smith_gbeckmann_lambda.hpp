@@ -33,6 +33,14 @@ double smith_gbeckmann_p2_at_zero(double p);
 //   Lambda = 2p nu^2 / (pi Gamma(1/p)) Integral_0^inf s (s - atan s) exp(-(nu^2 (1 + s^2))^p) ds,
 // nu = 1/a; the grazing asymptotic expansion for a > 1e5.
 double smith_gbeckmann_lambda(double a, double p);
+// Beyond a = kSmithGBeckmannGrazingA Lambda is the grazing expansion (1e-16 relative there);
+// where N = a^{-2p} exceeds kSmithGBeckmannUnderflowN, Lambda < 1e-320 is returned as 0.
+inline constexpr double kSmithGBeckmannGrazingA = 1e5;
+inline constexpr double kSmithGBeckmannUnderflowN = 800.0;
+// ln(Lambda(a, p)) + a^{-2p} for a in (0, 1e5] (a^{-2p} finite): the same quadrature with the
+// factor exp(-a^{-2p}) left out, so it neither underflows nor loses digits where Lambda is
+// tiny. Smooth in ln a and linear in it at both ends (smith_gbeckmann_lambda_interp.hpp).
+double smith_gbeckmann_log_lambda_scaled(double a, double p);
 // G1 = 1 / (1 + Lambda) (Eq. 42), in [0, 1].
 double smith_gbeckmann_g1(double a, double p);
 // Lambda as printed, Eq. 41 with P2 of Eq. 9 (the corrected Eq. 40): nested exp-sinh
