@@ -51,9 +51,12 @@ void add_table_rows(Quantity& q, const lookup::Table& t, const std::string& vari
 
 }  // namespace
 
-Quantity measure_hfunc_h0() {
+namespace {
+
+Quantity measure_hfunc_h0(const Options& o) {
   using numerics::HKind;
-  Quantity q{"hfunc_h0", "H^(0)(c, mu), Lambertian sphere (d'Eon Sec. 3.1)", "max relative error", 512, {}};
+  Quantity q{"hfunc_h0", "H^(0)(c, mu), Lambertian sphere (d'Eon Sec. 3.1)", "max relative error", o.quick ? 64u : 512u,
+             {}};
   std::mt19937_64 rng(2024);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   std::vector<double> c(q.points), mu(q.points), exact(q.points);
@@ -82,7 +85,7 @@ Quantity measure_hfunc_h0() {
   });
   q.rows.push_back(fit);
 
-  for (int cells : {15, 31, 63, 127}) {
+  for (int cells : o.quick ? std::vector<int>{15} : std::vector<int>{15, 31, 63, 127}) {
     gen::hfunc::Config cfg;
     cfg.kinds = {HKind::ls0};
     cfg.do_compact = false;
@@ -99,4 +102,12 @@ Quantity measure_hfunc_h0() {
   return q;
 }
 
+}  // namespace
+
 }  // namespace brdftab::validate::pareto
+
+namespace brdftab::validate::hfunc {
+
+std::vector<pareto::Quantity> pareto_quantities(const pareto::Options& o) { return {pareto::measure_hfunc_h0(o)}; }
+
+}  // namespace brdftab::validate::hfunc

@@ -18,7 +18,9 @@ int run_bench(const BenchOptions& o, std::ostream& err) {
       err << "brdftab bench: --pareto takes no Google Benchmark options (got '" << o.benchmark_args[0] << "')\n";
       return 2;
     }
-    return validate::pareto::run(o.pareto_dir, std::cout, err);
+    validate::pareto::Options po;
+    po.tables_dir = o.tables_dir;
+    return validate::pareto::run(o.pareto_dir, std::cout, err, po);
   }
   std::vector<std::string> args = {"brdftab-bench"};
   for (const auto& a : o.benchmark_args) args.push_back(a);
