@@ -241,7 +241,18 @@ int run(const std::filesystem::path& dir, std::ostream& log, std::ostream& err, 
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec || !std::filesystem::is_directory(dir)) throw std::runtime_error("cannot create the folder " + dir.string());
+    for (const std::string& k : options.only) {
+      bool known = false;
+      for (const Family& fam : all_families()) known = known || k == fam.key;
+      if (!known) {
+        std::string keys;
+        for (const Family& fam : all_families()) keys += std::string(keys.empty() ? "" : ", ") + fam.key;
+        throw std::invalid_argument("family '" + k + "' has no pareto quantities (families: " + keys + ")");
+      }
+    }
     for (const Family& fam : all_families()) {
+      if (!options.only.empty() && std::find(options.only.begin(), options.only.end(), fam.key) == options.only.end())
+        continue;
       const auto t0 = std::chrono::steady_clock::now();
       for (const Quantity& q : fam.measure(options)) {
       write_quantity(dir, q);

@@ -47,6 +47,7 @@ void write_quantity(const std::filesystem::path& dir, const Quantity& q);
 struct Options {
   bool quick = false;
   std::filesystem::path tables_dir;  // the generated tables (bench --tables); may be empty or absent
+  std::vector<std::string> only;     // family keys to run (empty: all); run() refuses an unknown key
 };
 
 // CPU time (this thread) per value of run(), which evaluates `n` values: repeated for at

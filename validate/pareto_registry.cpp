@@ -9,7 +9,8 @@
   X(ghs_sigma_rel)                 \
   X(fresnel)                       \
   X(ls)                            \
-  X(microfacet_albedo)
+  X(microfacet_albedo)              \
+  X(htsg)
 
 namespace brdftab::validate {
 
