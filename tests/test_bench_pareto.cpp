@@ -208,3 +208,15 @@ TEST_CASE("bench --pareto quick run: every quantity's CSV is well formed and san
   CHECK(brdftab::testing::contains(log.str(), "(microfacet_albedo: "));
   fs::remove_all(dir);
 }
+
+TEST_CASE("bench --pareto-only: an unknown family is refused naming the known ones, and it needs --pareto") {
+  const fs::path dir = brdftab::testing::scratch_dir("pareto_only");
+  const auto r = run_cli("bench --pareto " + dir.string() + " --pareto-only nosuch");
+  CHECK(r.status == 1);
+  CHECK(brdftab::testing::contains(r.err, "family 'nosuch' has no pareto quantities"));
+  CHECK(brdftab::testing::contains(r.err, "fresnel"));
+  const auto r2 = run_cli("bench --pareto-only fresnel");
+  CHECK(r2.status == 2);
+  CHECK(brdftab::testing::contains(r2.err, "--pareto-only needs --pareto DIR"));
+  fs::remove_all(dir);
+}
