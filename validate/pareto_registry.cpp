@@ -10,7 +10,8 @@
   X(fresnel)                       \
   X(ls)                            \
   X(microfacet_albedo)              \
-  X(htsg)
+  X(htsg)                           \
+  X(hazy_gloss)
 
 namespace brdftab::validate {
 
