@@ -119,6 +119,39 @@ TEST_CASE("pareto retabulated: same grid values, the storage and interpolation a
   CHECK(r.axis(0).transform == lookup::Transform::sqrt);
 }
 
+TEST_CASE("pareto subsampled: every stride-th node, the same range and transform, a stride that does not fit refused") {
+  const lookup::Axis a = lookup::make_axis("x", lookup::Transform::sqrt, 0.0, 4.0, 9);
+  const lookup::Axis b = lookup::make_axis("y", lookup::Transform::identity, -1.0, 1.0, 7);
+  std::vector<double> v(63);
+  for (int i = 0; i < 63; ++i) v[i] = 0.5 * i * i - 3;
+  const lookup::Table t("t", {a, b}, v, lookup::Storage::float64, lookup::Interpolation::cubic);
+  const lookup::Table s = validate::pareto::subsampled(t, 2);
+  REQUIRE(s.axis(0).n == 5);
+  REQUIRE(s.axis(1).n == 4);
+  CHECK(s.axis(0).x_lo == 0.0);
+  CHECK(s.axis(0).x_hi == 4.0);
+  CHECK(s.axis(0).transform == lookup::Transform::sqrt);
+  CHECK(s.interpolation() == lookup::Interpolation::cubic);
+  int bad = 0;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const int idx[2] = {i, j};
+      bad += s.at_index(idx) != v[7 * (2 * i) + 2 * j];
+      bad += std::abs(s.axis(0).value(i) - a.value(2 * i)) > 1e-15;  // the same node positions
+    }
+  CHECK(bad == 0);
+  CHECK_THROWS_AS(validate::pareto::subsampled(t, 4), std::invalid_argument);  // 4 does not divide 7 - 1
+}
+
+TEST_CASE("pareto max errors: absolute and relative by hand, a NaN is kept") {
+  const std::vector<double> exact = {1.0, -2.0, 4.0};
+  const std::vector<double> approx = {1.5, -2.0, 3.0};
+  auto f = [&](std::size_t i) { return approx[i]; };
+  CHECK(validate::pareto::max_abs_error(exact, f) == 1.0);
+  CHECK(validate::pareto::max_rel_error(exact, f) == 0.5);
+  CHECK(std::isnan(validate::pareto::max_abs_error(exact, [](std::size_t i) { return i == 1 ? NAN : 0.0; })));
+}
+
 TEST_CASE("bench --pareto refuses Google Benchmark options") {
   const auto r = run_cli("bench --pareto " + (fs::path(BRDFTAB_TEST_TMP) / "never_written").string() +
                          " --benchmark_filter=lookup");
