@@ -1,11 +1,15 @@
 // `brdftab bench --pareto` pieces: the Pareto front on crafted rows (worked out by hand),
 // the CSV and gnuplot files (read back; the script run through gnuplot when it is installed),
 // the retabulated copies of a table, and the option check. The measurement itself is a
-// benchmark (not timed here).
+// benchmark (not timed here); a quick run of every family's quantities (few points, coarse
+// tables) checks each CSV for structure and sanity.
 #include <doctest/doctest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <map>
+#include <set>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -31,6 +35,26 @@ std::vector<std::string> lines_of(const fs::path& p) {
   std::vector<std::string> v;
   for (std::string l; std::getline(in, l);) v.push_back(l);
   return v;
+}
+
+// One CSV line split into fields ("" inside a quoted field is a quote).
+std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> f(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char ch = line[i];
+    if (quoted && ch == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      f.back() += '"';
+      ++i;
+    } else if (ch == '"') {
+      quoted = !quoted;
+    } else if (ch == ',' && !quoted) {
+      f.emplace_back();
+    } else {
+      f.back() += ch;
+    }
+  }
+  return f;
 }
 
 }  // namespace
@@ -95,9 +119,138 @@ TEST_CASE("pareto retabulated: same grid values, the storage and interpolation a
   CHECK(r.axis(0).transform == lookup::Transform::sqrt);
 }
 
+TEST_CASE("pareto subsampled: every stride-th node, the same range and transform, a stride that does not fit refused") {
+  const lookup::Axis a = lookup::make_axis("x", lookup::Transform::sqrt, 0.0, 4.0, 9);
+  const lookup::Axis b = lookup::make_axis("y", lookup::Transform::identity, -1.0, 1.0, 7);
+  std::vector<double> v(63);
+  for (int i = 0; i < 63; ++i) v[i] = 0.5 * i * i - 3;
+  const lookup::Table t("t", {a, b}, v, lookup::Storage::float64, lookup::Interpolation::cubic);
+  const lookup::Table s = validate::pareto::subsampled(t, 2);
+  REQUIRE(s.axis(0).n == 5);
+  REQUIRE(s.axis(1).n == 4);
+  CHECK(s.axis(0).x_lo == 0.0);
+  CHECK(s.axis(0).x_hi == 4.0);
+  CHECK(s.axis(0).transform == lookup::Transform::sqrt);
+  CHECK(s.interpolation() == lookup::Interpolation::cubic);
+  int bad = 0;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const int idx[2] = {i, j};
+      bad += s.at_index(idx) != v[7 * (2 * i) + 2 * j];
+      bad += std::abs(s.axis(0).value(i) - a.value(2 * i)) > 1e-15;  // the same node positions
+    }
+  CHECK(bad == 0);
+  CHECK_THROWS_AS(validate::pareto::subsampled(t, 4), std::invalid_argument);  // 4 does not divide 7 - 1
+}
+
+TEST_CASE("pareto max errors: absolute and relative by hand, a NaN is kept") {
+  const std::vector<double> exact = {1.0, -2.0, 4.0};
+  const std::vector<double> approx = {1.5, -2.0, 3.0};
+  auto f = [&](std::size_t i) { return approx[i]; };
+  CHECK(validate::pareto::max_abs_error(exact, f) == 1.0);
+  CHECK(validate::pareto::max_rel_error(exact, f) == 0.5);
+  CHECK(std::isnan(validate::pareto::max_abs_error(exact, [](std::size_t i) { return i == 1 ? NAN : 0.0; })));
+}
+
 TEST_CASE("bench --pareto refuses Google Benchmark options") {
   const auto r = run_cli("bench --pareto " + (fs::path(BRDFTAB_TEST_TMP) / "never_written").string() +
                          " --benchmark_filter=lookup");
   CHECK(r.status == 2);
   CHECK(brdftab::testing::contains(r.err, "--pareto takes no Google Benchmark options"));
+}
+
+TEST_CASE("bench --pareto quick run: every quantity's CSV is well formed and sane") {
+  const fs::path dir = brdftab::testing::scratch_dir("pareto_quick");
+  std::ostringstream log, err;
+  validate::pareto::Options o;
+  o.quick = true;
+  const int status = validate::pareto::run(dir, log, err, o);
+  CAPTURE(err.str());
+  REQUIRE(status == 0);
+  CHECK(err.str().empty());
+  const std::set<std::string> expected = {"hfunc_h0",
+                                          "hfunc_h1",
+                                          "hfunc_h_iso",
+                                          "smith_gbeckmann_g1",
+                                          "ghs_sigma_rel2",
+                                          "fresnel_dr",
+                                          "fresnel_avg_conductor",
+                                          "fresnel_conductor",
+                                          "ls_kd",
+                                          "ls_albedo",
+                                          "ls_brdf",
+                                          "microfacet_albedo_ggx_e",
+                                          "microfacet_albedo_ggx_eavg",
+                                          "microfacet_albedo_beckmann_e",
+                                          "microfacet_albedo_beckmann_eavg",
+                                          "htsg_distribution",
+                                          "htsg_shadowing",
+                                          "htsg_sigma0",
+                                          "hazy_gloss_albedo"};
+  std::set<std::string> found;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".csv") found.insert(e.path().stem().string().substr(std::string("pareto_").size()));
+  CHECK(found == expected);
+  for (const std::string& key : expected) {
+    CAPTURE(key);
+    REQUIRE(fs::exists(dir / ("pareto_" + key + ".gp")));
+    const auto csv = lines_of(dir / ("pareto_" + key + ".csv"));
+    REQUIRE(csv.size() >= 3);  // header, a reference or exact row, at least one other
+    CHECK(csv[0] ==
+          "quantity,method,variant,storage,interpolation,table_bytes,ns_per_value,max_error,error_kind,error_source,"
+          "on_front");
+    int on_front = 0, references = 0, tables = 0;
+    double best_table = INFINITY, worst_exact = 0;
+    std::set<std::string> kinds, storages;
+    for (std::size_t i = 1; i < csv.size(); ++i) {
+      CAPTURE(csv[i]);
+      const auto f = csv_fields(csv[i]);
+      REQUIRE(f.size() == 11);
+      CHECK(f[0] == key);
+      kinds.insert(f[8]);
+      const double ns = std::stod(f[6]);
+      CHECK(std::isfinite(ns));
+      CHECK(ns > 0);
+      CHECK((f[10] == "0" || f[10] == "1"));
+      on_front += f[10] == "1";
+      if (f[7].empty()) {  // a reference: the exact numerics themselves, never on the front
+        ++references;
+        CHECK(f[1] == "exact");
+        CHECK(f[10] == "0");
+        continue;
+      }
+      const double e = std::stod(f[7]);
+      CHECK(std::isfinite(e));
+      CHECK(e >= 0);
+      CHECK(!f[9].empty());  // what the error is measured against
+      if (f[1] == "exact") worst_exact = std::max(worst_exact, e);
+      if (f[1].rfind("table", 0) == 0) {
+        ++tables;
+        best_table = std::min(best_table, e);
+        CHECK(std::stod(f[5]) > 0);  // table bytes
+        CHECK((f[3] == "float32" || f[3] == "float64"));
+        storages.insert(f[3]);
+        CHECK((f[4] == "linear" || f[4] == "cubic"));
+      }
+    }
+    CHECK(on_front >= 1);
+    CHECK(kinds.size() == 1);  // one error kind (absolute or relative) per quantity
+    CHECK((*kinds.begin() == "max absolute error" || *kinds.begin() == "max relative error"));
+    if (tables > 0) CHECK(worst_exact < best_table);  // the exact numerics beat every table
+    if (tables > 0) CHECK(storages.size() == 2);  // tables in both precisions
+  }
+  CHECK(brdftab::testing::contains(log.str(), "(microfacet_albedo: "));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("bench --pareto-only: an unknown family is refused naming the known ones, and it needs --pareto") {
+  const fs::path dir = brdftab::testing::scratch_dir("pareto_only");
+  const auto r = run_cli("bench --pareto " + dir.string() + " --pareto-only nosuch");
+  CHECK(r.status == 1);
+  CHECK(brdftab::testing::contains(r.err, "family 'nosuch' has no pareto quantities"));
+  CHECK(brdftab::testing::contains(r.err, "fresnel"));
+  const auto r2 = run_cli("bench --pareto-only fresnel");
+  CHECK(r2.status == 2);
+  CHECK(brdftab::testing::contains(r2.err, "--pareto-only needs --pareto DIR"));
+  fs::remove_all(dir);
 }

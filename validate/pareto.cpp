@@ -5,6 +5,7 @@
 #include <time.h>  // clock_gettime (POSIX)
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cmath>
 #include <fstream>
@@ -131,21 +132,32 @@ void write_quantity(const std::filesystem::path& dir, const Quantity& q) {
   if (!g.flush()) throw std::runtime_error("cannot write " + (dir / (stem + ".gp")).string());
 }
 
+namespace {
+double g_time_scale = 1.0;  // 0.05 during a quick run (Options::quick)
+}  // namespace
+
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
 double ns_per_value(std::size_t n, const std::function<void()>& run, double min_seconds) {
-  auto cpu = [] {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-  };
+  min_seconds *= g_time_scale;
+  // The clock read (a system call, ~0.3-1 us) is amortized: run() is called in batches that
+  // double until a batch takes a hundredth of min_seconds or more.
   double best = std::numeric_limits<double>::infinity();
   for (int rep = 0; rep < 3; ++rep) {
-    const double t0 = cpu();
+    const double t0 = thread_cpu_seconds();
     double elapsed = 0;
-    long calls = 0;
+    long calls = 0, batch = 1;
     do {
-      run();
-      ++calls;
-      elapsed = cpu() - t0;
+      const double b0 = thread_cpu_seconds();
+      for (long k = 0; k < batch; ++k) run();
+      calls += batch;
+      const double now = thread_cpu_seconds();
+      elapsed = now - t0;
+      if (now - b0 < 1e-2 * min_seconds && batch < (1L << 20)) batch *= 2;
     } while (elapsed < min_seconds);
     best = std::min(best, elapsed / static_cast<double>(calls) / static_cast<double>(n) * 1e9);
   }
@@ -167,13 +179,82 @@ lookup::Table retabulated(const lookup::Table& t, lookup::Storage storage, looku
   return lookup::Table(t.name(), axes, values, storage, interpolation);
 }
 
-int run(const std::filesystem::path& dir, std::ostream& log, std::ostream& err) {
+lookup::Table subsampled(const lookup::Table& t, int stride) {
+  std::vector<lookup::Axis> axes;
+  for (int d = 0; d < t.rank(); ++d) {
+    const lookup::Axis& a = t.axis(d);
+    if (stride < 1 || (a.n - 1) % stride != 0)
+      throw std::invalid_argument("subsampled: stride " + std::to_string(stride) + " does not divide n - 1 = " +
+                                  std::to_string(a.n - 1) + " of axis '" + a.name + "'");
+    axes.push_back(lookup::make_axis(a.name, a.transform, a.x_lo, a.x_hi, (a.n - 1) / stride + 1, a.scale, a.units));
+  }
+  std::size_t size = 1;
+  for (const auto& a : axes) size *= static_cast<std::size_t>(a.n);
+  std::vector<double> values(size);
+  std::vector<int> idx(axes.size(), 0), src(axes.size(), 0);
+  for (std::size_t i = 0; i < size; ++i) {
+    for (std::size_t d = 0; d < axes.size(); ++d) src[d] = idx[d] * stride;
+    values[i] = t.at_index(src);
+    for (int d = static_cast<int>(axes.size()) - 1; d >= 0; --d) {  // row-major, last axis fastest
+      if (++idx[d] < axes[d].n) break;
+      idx[d] = 0;
+    }
+  }
+  return lookup::Table(t.name(), axes, values, t.storage(), t.interpolation());
+}
+
+double max_abs_error(const std::vector<double>& exact, const std::function<double(std::size_t)>& approx) {
+  double e = 0;
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    const double d = std::abs(approx(i) - exact[i]);
+    e = std::isnan(d) ? d : std::max(e, d);  // a NaN is kept (and fails the sanity tests)
+    if (std::isnan(e)) break;
+  }
+  return e;
+}
+
+double max_rel_error(const std::vector<double>& exact, const std::function<double(std::size_t)>& approx) {
+  double e = 0;
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    const double d = std::abs(approx(i) / exact[i] - 1);
+    e = std::isnan(d) ? d : std::max(e, d);
+    if (std::isnan(e)) break;
+  }
+  return e;
+}
+
+Point table_point(const lookup::Table& t, const std::string& variant, double err, const std::string& error_source,
+                  std::size_t n, const std::function<void()>& eval_all, const std::string& method) {
+  Point p{method, variant, std::string(lookup::storage_name(t.storage())),
+          std::string(lookup::interpolation_name(t.interpolation())), static_cast<double>(t.bytes()), 0, err,
+          error_source};
+  p.ns_per_value = ns_per_value(n, eval_all);
+  return p;
+}
+
+int run(const std::filesystem::path& dir, std::ostream& log, std::ostream& err, const Options& options) {
+  struct ScaleGuard {
+    explicit ScaleGuard(double s) { g_time_scale = s; }
+    ~ScaleGuard() { g_time_scale = 1.0; }
+  } scale(options.quick ? 0.05 : 1.0);
   try {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec || !std::filesystem::is_directory(dir)) throw std::runtime_error("cannot create the folder " + dir.string());
-    for (auto measure : {&measure_hfunc_h0, &measure_smith_gbeckmann_g1, &measure_ghs_sigma_rel2}) {
-      const Quantity q = measure();
+    for (const std::string& k : options.only) {
+      bool known = false;
+      for (const Family& fam : all_families()) known = known || k == fam.key;
+      if (!known) {
+        std::string keys;
+        for (const Family& fam : all_families()) keys += std::string(keys.empty() ? "" : ", ") + fam.key;
+        throw std::invalid_argument("family '" + k + "' has no pareto quantities (families: " + keys + ")");
+      }
+    }
+    for (const Family& fam : all_families()) {
+      if (!options.only.empty() && std::find(options.only.begin(), options.only.end(), fam.key) == options.only.end())
+        continue;
+      const auto t0 = std::chrono::steady_clock::now();
+      for (const Quantity& q : fam.measure(options)) {
       write_quantity(dir, q);
       const std::vector<bool> front = pareto_front(q.rows);
       log << q.title << " (" << q.error_kind << ", " << q.points << " points): " << (dir / ("pareto_" + q.key + ".csv")).string()
@@ -190,6 +271,11 @@ int run(const std::filesystem::path& dir, std::ostream& log, std::ostream& err) 
           log << "reference\n";
         }
       }
+      }
+      char line[96];
+      std::snprintf(line, sizeof line, "(%s: %.1f s)\n", fam.key,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      log << line;
     }
   } catch (const std::exception& e) {
     err << "brdftab bench --pareto: " << e.what() << "\n";

@@ -18,9 +18,11 @@
 
 namespace brdftab::validate::pareto {
 
-Quantity measure_smith_gbeckmann_g1() {
+namespace {
+
+Quantity measure_smith_gbeckmann_g1(const Options& o) {
   Quantity q{"smith_gbeckmann_g1", "G1(a, p), generalized Beckmann (Holzschuch-Pacanowski Eq. 41-42)",
-             "max absolute error", 256, {}};
+             "max absolute error", o.quick ? 32u : 256u, {}};
   std::mt19937_64 rng(4242);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   std::vector<double> p(q.points), a(q.points), m1(q.points), exact(q.points);
@@ -42,7 +44,9 @@ Quantity measure_smith_gbeckmann_g1() {
   }, 0.005);
   q.rows.push_back(ex);
 
-  for (auto [np, nb] : {std::pair{8, 32}, std::pair{16, 64}, std::pair{24, 100}, std::pair{40, 200}, std::pair{63, 320}}) {
+  std::vector<std::pair<int, int>> sizes = {{8, 32}, {16, 64}, {24, 100}, {40, 200}, {63, 320}};
+  if (o.quick) sizes.resize(1);
+  for (auto [np, nb] : sizes) {
     gen::smith_gbeckmann::Config cfg;
     cfg.compact = false;
     cfg.precise_log_p_step = std::log(cfg.p_hi / cfg.p_lo) / np;
@@ -71,4 +75,12 @@ Quantity measure_smith_gbeckmann_g1() {
   return q;
 }
 
+}  // namespace
+
 }  // namespace brdftab::validate::pareto
+
+namespace brdftab::validate::smith_gbeckmann {
+
+std::vector<pareto::Quantity> pareto_quantities(const pareto::Options& o) { return {pareto::measure_smith_gbeckmann_g1(o)}; }
+
+}  // namespace brdftab::validate::smith_gbeckmann

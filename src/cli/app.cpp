@@ -70,6 +70,7 @@ int run_main(int argc, char** argv) {
   b->add_option("--report", be.report_dir, "also write benchmark JSON into this folder");
   b->add_option("--pareto", be.pareto_dir,
                 "instead: write run time against error of every method (CSV + gnuplot script per quantity) into this folder");
+  b->add_option("--pareto-only", be.pareto_only, "with --pareto: only these families' quantities")->expected(1, -1);
   b->allow_extras();
 
   std::vector<std::string> info_files;

@@ -13,12 +13,19 @@
 namespace brdftab::cli {
 
 int run_bench(const BenchOptions& o, std::ostream& err) {
+  if (o.pareto_dir.empty() && !o.pareto_only.empty()) {
+    err << "brdftab bench: --pareto-only needs --pareto DIR\n";
+    return 2;
+  }
   if (!o.pareto_dir.empty()) {
     if (!o.benchmark_args.empty()) {
       err << "brdftab bench: --pareto takes no Google Benchmark options (got '" << o.benchmark_args[0] << "')\n";
       return 2;
     }
-    return validate::pareto::run(o.pareto_dir, std::cout, err);
+    validate::pareto::Options po;
+    po.tables_dir = o.tables_dir;
+    po.only = o.pareto_only;
+    return validate::pareto::run(o.pareto_dir, std::cout, err, po);
   }
   std::vector<std::string> args = {"brdftab-bench"};
   for (const auto& a : o.benchmark_args) args.push_back(a);

@@ -84,6 +84,7 @@ struct BenchOptions {
   std::filesystem::path report_dir;  // empty: console only
   std::vector<std::string> benchmark_args;  // passed to Google Benchmark (e.g. --benchmark_filter=...)
   std::filesystem::path pareto_dir;  // non-empty: write time-against-error CSV + gnuplot per quantity instead
+  std::vector<std::string> pareto_only;  // with pareto_dir: only these families (empty: all)
 };
 int run_bench(const BenchOptions& o, std::ostream& err);
 
