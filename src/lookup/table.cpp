@@ -1,6 +1,7 @@
 #include "lookup/number_format.hpp"
 #include "lookup/table.hpp"
 #include "lookup/detail/table_simd.hpp"
+#include "lookup/detail/with_transform.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -245,21 +246,7 @@ struct KernelImpl {
 namespace {
 using KernelFn = double (*)(const Table&, const double*);
 using BatchFn = void (*)(const Table&, const double*, std::size_t, double*);
-
-// Calls f.template operator()<Tr>() for the transform t.
-template <class F>
-auto with_transform(Transform t, F&& f) {
-  switch (t) {
-    case Transform::log: return f.template operator()<Transform::log>();
-    case Transform::sqrt: return f.template operator()<Transform::sqrt>();
-    case Transform::sqrt_one_minus: return f.template operator()<Transform::sqrt_one_minus>();
-    case Transform::x_over_k_plus_x: return f.template operator()<Transform::x_over_k_plus_x>();
-    case Transform::log_x_minus_1: return f.template operator()<Transform::log_x_minus_1>();
-    case Transform::fourth_root: return f.template operator()<Transform::fourth_root>();
-    case Transform::identity: break;
-  }
-  return f.template operator()<Transform::identity>();
-}
+using detail::with_transform;
 
 template <int D, int K, class T>
 void pick(const Transform* tr, bool identity, KernelFn& k, BatchFn& b) {

@@ -3,6 +3,7 @@
 // by the linker for every caller (ODR). No FMA: every product and sum rounds as in the
 // scalar kernel (interp::stencil_u, interp::accumulate).
 #include "lookup/detail/table_simd.hpp"
+#include "lookup/detail/with_transform.hpp"
 
 #include <immintrin.h>
 
@@ -91,19 +92,6 @@ inline __m256d transform_fixed(const interp::AxisMap& a, __m256d x) {
   return x;
 }
 
-// Calls f.template operator()<Tr>() for the axis' transform: one switch per run of values.
-template <class F>
-inline void with_transform(Transform t, F&& f) {
-  switch (t) {
-    case Transform::identity: return f.template operator()<Transform::identity>();
-    case Transform::log: return f.template operator()<Transform::log>();
-    case Transform::sqrt: return f.template operator()<Transform::sqrt>();
-    case Transform::sqrt_one_minus: return f.template operator()<Transform::sqrt_one_minus>();
-    case Transform::x_over_k_plus_x: return f.template operator()<Transform::x_over_k_plus_x>();
-    case Transform::log_x_minus_1: return f.template operator()<Transform::log_x_minus_1>();
-    case Transform::fourth_root: return f.template operator()<Transform::fourth_root>();
-  }
-}
 
 // In place: x -> u = T(clamp(x, x_lo, x_hi)) for m values (m a multiple of 4), as
 // interp::stencil does before stencil_u: max(lo, x) and min(hi, x) keep NaN, like
