@@ -98,5 +98,10 @@ TEST_CASE("microfacet_albedo sheared grid: small alpha near grazing within the s
                        doctest::Contains("mu = 1e-"), lookup::DomainError);
   CHECK_THROWS_WITH_AS(lookup::microfacet_albedo(t, 0.5, 0.05, 1.0, lookup::OutOfDomain::error), doctest::Contains("alpha = 0.05"),
                        lookup::DomainError);
+  // The same tables without their shear constants are refused, not read with mu as s.
+  lookup::MicrofacetAlbedoTables bare = t;
+  bare.shear.reset();
+  CHECK_THROWS_WITH_AS(lookup::microfacet_albedo(bare, 0.5, 0.02), doctest::Contains("no shear constants"),
+                       std::invalid_argument);
   fs::remove_all(dir);
 }

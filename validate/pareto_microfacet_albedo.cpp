@@ -14,6 +14,7 @@
 // API and the generator's build functions are used.
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -34,8 +35,10 @@ namespace sc = schema::microfacet_albedo;
 // The tables of one NDF at one resolution, owned (retabulated copies).
 struct OwnedTables {
   std::vector<lookup::Table> store;  // 4 E tables, then 2 E_avg tables
+  std::optional<sc::MuShear> shear;  // the (alpha, s) tables' mu coordinate
   lookup::MicrofacetAlbedoTables view() const {
     lookup::MicrofacetAlbedoTables t;
+    t.shear = shear;
     for (std::size_t q = 0; q < 4; ++q) t.e[q] = &store[q];
     for (std::size_t q = 0; q < 2; ++q) t.avg[q] = &store[4 + q];
     return t;
@@ -44,6 +47,7 @@ struct OwnedTables {
 
 OwnedTables copy_of(const lookup::MicrofacetAlbedoTables& t, lookup::Storage st, lookup::Interpolation in) {
   OwnedTables o;
+  o.shear = t.shear;
   o.store.reserve(6);
   for (const lookup::Table* e : t.e) o.store.push_back(retabulated(*e, st, in));
   for (const lookup::Table* a : t.avg) o.store.push_back(retabulated(*a, st, in));
@@ -88,6 +92,8 @@ std::unique_ptr<Source> source(const Options& o) {
   s->built = gen::microfacet_albedo::build(cfg, gen::GenerateContext{});
   for (int k = 0; k < 2; ++k) {
     lookup::MicrofacetAlbedoTables t;
+    t.shear = sc::MuShear{};  // the generator's constants over the config's mu range
+    t.shear->mu_lo = cfg.mu_lo, t.shear->mu_hi = cfg.mu_hi;
     for (int q = 0; q < 4; ++q) t.e[static_cast<std::size_t>(q)] = &built_dataset(s->built, sc::ndf_dataset(k, false, q).name);
     for (int q = 0; q < 2; ++q) t.avg[static_cast<std::size_t>(q)] = &built_dataset(s->built, sc::ndf_avg_dataset(k, q).name);
     s->tables.push_back({t});

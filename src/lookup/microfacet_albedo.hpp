@@ -148,6 +148,11 @@ inline MicrofacetAlbedoValues microfacet_albedo(const MicrofacetAlbedoTables& t,
       v[q] = tab.eval(x, policy);
     } else if (t.shear) {
       v[q] = tab.eval2(alpha, s, policy);
+    } else if (tab.axis(1).name == schema::microfacet_albedo::kS.name) [[unlikely]] {
+      // An (alpha, s) table without its s(mu; alpha) constants would read mu as s.
+      throw std::invalid_argument("microfacet_albedo: table '" + tab.name() +
+                                  "' is on (alpha, s) but the tables carry no shear constants (set "
+                                  "MicrofacetAlbedoTables::shear, e.g. from microfacet_albedo_tables)");
     } else {
       v[q] = tab.eval2(alpha, mu, policy);
     }
