@@ -102,8 +102,8 @@ void furnace(ReportContext& ctx, const std::string& ndf, const lookup::Microface
   const numerics::GaussLegendreRule rule = numerics::gauss_legendre_rule(64);
   const double edges[] = {1e-6, 1e-3, 0.03, 1.0};
   double worst = 0, at_a = 0, at_mu = 0;
-  for (double alpha : {0.01, 0.03, 0.1, 0.3, 0.6, 1.0}) {
-    for (double mu_o : {1e-3, 0.1, 0.5, 0.9, 1.0}) {
+  for (double alpha : {0.01, 0.02, 0.03, 0.05, 0.1, 0.2, 0.3, 0.5, 0.6, 0.8, 1.0}) {
+    for (double mu_o : {1e-6, 1e-3, 0.01, 0.1, 0.3, 0.5, 0.9, 1.0}) {
       double s = 0;
       for (int p = 0; p < 3; ++p) {
         const double c = 0.5 * (edges[p] + edges[p + 1]), h = 0.5 * (edges[p + 1] - edges[p]);
@@ -118,8 +118,8 @@ void furnace(ReportContext& ctx, const std::string& ndf, const lookup::Microface
   }
   char buf[400];
   std::snprintf(buf, sizeof buf,
-                "White furnace of f + f_ms (Kulla-Conty, F = 1) from the %s precise tables alone, alpha in {0.01 .. 1}, mu_o "
-                "in {1e-3 .. 1}: max |albedo - 1| = %.2e (alpha = %.3g, mu_o = %.3g); it is set by the table errors of E and "
+                "White furnace of f + f_ms (Kulla-Conty, F = 1) from the %s precise tables alone, alpha in {0.01 .. 1} (11 values), mu_o "
+                "in {1e-6 .. 1} (8 values): max |albedo - 1| = %.2e (alpha = %.3g, mu_o = %.3g); it is set by the table errors of E and "
                 "E_avg and the mu_i quadrature.\n\n",
                 ndf.c_str(), worst, at_a, at_mu);
   *ctx.markdown << buf;
