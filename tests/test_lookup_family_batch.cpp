@@ -1,5 +1,6 @@
 // The family batched lookups (HfuncTable::eval_batch, smith_gbeckmann_g1_batch,
-// ghs_sigma_rel2_batch, GhsSigmaRelMaterial::eval_batch) against their scalar forms on the
+// ghs_sigma_rel2_batch, GhsSigmaRelMaterial::eval_batch, microfacet_albedo_batch,
+// kulla_conty_lobe_batch) against their scalar forms on the
 // committed tables, with NaN, infinities, out-of-range values and ragged batch sizes: bit for
 // bit where every axis transform rounds as its scalar form (sqrt, x^(1/4), identity, x/(k+x),
 // and every transform on the generic path), within the derived bound of the vector log
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -17,6 +19,8 @@
 #include "lookup/detail/table_simd.hpp"
 #include "lookup/ghs_sigma_rel.hpp"
 #include "lookup/hfunc.hpp"
+#include "lookup/microfacet_albedo.hpp"
+#include "lookup/table_set.hpp"
 #include "lookup/smith_gbeckmann.hpp"
 #include "lookup/table_file.hpp"
 
@@ -171,4 +175,69 @@ TEST_CASE("ghs_sigma_rel2_batch and the material batch against their scalar look
     }
   }
   detail::set_avx2_enabled(true);
+}
+
+TEST_CASE("microfacet_albedo_batch and kulla_conty_lobe_batch against their scalar lookups") {
+  namespace sc = schema::microfacet_albedo;
+  TableSet ts(kTables);
+  struct Case {
+    const char* ndf;
+    bool precise;
+  };
+  for (Case cs : {Case{"ggx", true}, Case{"ggx", false}, Case{"beckmann", true}, Case{"gbeckmann", false}}) {
+    const MicrofacetAlbedoTables t = microfacet_albedo_tables(ts, cs.ndf, cs.precise);
+    const bool g = std::string(cs.ndf) == "gbeckmann";
+    // alpha (and p) are log axes: the AVX2 path is within the vector-log bound, the generic exact.
+    const double bound = log_bound(*t.e[0], g ? std::initializer_list<int>{0, 1} : std::initializer_list<int>{0});
+    for (bool avx2 : {true, false}) {
+      detail::set_avx2_enabled(avx2);
+      std::mt19937_64 rng(10);
+      for (std::size_t n : kSizes) {
+        std::vector<double> mu(n), mu_i(n), alpha(n), p(n), out(n, -7.0), lobe(n, -7.0);
+        for (std::size_t i = 0; i < n; ++i) {
+          mu[i] = awkward(rng, 0, 1), mu_i[i] = awkward(rng, 0, 1), alpha[i] = awkward(rng, 0.01, 1);
+          p[i] = awkward(rng, 0.5, 2);
+        }
+        const std::span<const double> ps = g ? std::span<const double>(p) : std::span<const double>();
+        double worst = 0, worst_lobe = 0, lobe_bound = 0;
+        int nan_mismatch = 0, field_bad = 0;
+        for (int q = 0; q < 4; ++q) {
+          const auto quantity = static_cast<MicrofacetAlbedoQuantity>(q);
+          microfacet_albedo_batch(t, quantity, mu, alpha, ps, out);
+          for (std::size_t i = 0; i < n; ++i) {
+            const double pi = g ? p[i] : 1.0;
+            const double one = microfacet_albedo(t, quantity, mu[i], alpha[i], pi);
+            const MicrofacetAlbedoValues all = microfacet_albedo(t, mu[i], alpha[i], pi);
+            const double field[4] = {all.e_corr, all.e_sep, all.split_scale, all.split_bias};
+            field_bad += !same_bits(one, field[q]);
+            if ((one != one) != (out[i] != out[i])) ++nan_mismatch;
+            else if (one == one) worst = std::max(worst, std::abs(out[i] - one));
+          }
+        }
+        kulla_conty_lobe_batch(t, mu, mu_i, alpha, ps, lobe);
+        for (std::size_t i = 0; i < n; ++i) {
+          const double pi = g ? p[i] : 1.0;
+          const double one = kulla_conty_lobe(t, mu[i], mu_i[i], alpha[i], pi);
+          if ((one != one) != (lobe[i] != lobe[i])) ++nan_mismatch;
+          else if (one == one) {
+            worst_lobe = std::max(worst_lobe, std::abs(lobe[i] - one));
+            // f_ms = (1 - e_o)(1 - e_i) / (pi (1 - E_avg)): each E moves by <= bound, E_avg is scalar in both.
+            lobe_bound = std::max(lobe_bound, 2.0 * bound / (std::numbers::pi * (1 - microfacet_albedo_avg(t, alpha[i], pi).eavg_corr)));
+          }
+        }
+        INFO(cs.ndf << (cs.precise ? " precise" : " compact") << ", avx2 " << avx2 << ", n = " << n << ": max |batch - scalar| "
+                    << worst << " (lobe " << worst_lobe << "), bound " << bound);
+        CHECK(field_bad == 0);
+        CHECK(nan_mismatch == 0);
+        CHECK(worst <= (avx2 ? bound : 0.0));
+        CHECK(worst_lobe <= (avx2 ? lobe_bound : 0.0));
+      }
+    }
+    detail::set_avx2_enabled(true);
+    std::vector<double> mu(3), alpha(2), out(3);
+    CHECK_THROWS_AS(microfacet_albedo_batch(t, MicrofacetAlbedoQuantity::e_corr, mu, alpha, {}, out), std::invalid_argument);
+    std::vector<double> inside{0.5, 0.5, 2.0}, a3{0.5, 0.5, 0.5};
+    CHECK_THROWS_AS(microfacet_albedo_batch(t, MicrofacetAlbedoQuantity::e_corr, inside, a3, {}, out, OutOfDomain::error),
+                    DomainError);
+  }
 }

@@ -9,13 +9,16 @@
 //   const lookup::MicrofacetAlbedoTables ggx = lookup::microfacet_albedo_tables(ts, "ggx", true);
 //   lookup::MicrofacetAlbedoValues e = lookup::microfacet_albedo(ggx, mu, alpha);
 //   double fms = lookup::kulla_conty_lobe(ggx, mu_o, mu_i, alpha);   // F = 1
+//   lookup::microfacet_albedo_batch(ggx, lookup::MicrofacetAlbedoQuantity::e_corr, mus, alphas, {}, out);
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 
+#include "lookup/batch_chunks.hpp"
 #include "lookup/microfacet_albedo_schema.hpp"
 #include "lookup/number_format.hpp"
 #include "lookup/table.hpp"
@@ -134,6 +137,30 @@ inline MicrofacetAlbedoTables microfacet_albedo_material_tables(TableSet& ts, do
   return out;
 }
 
+// The four directional quantities, in the order of MicrofacetAlbedoTables::e.
+enum class MicrofacetAlbedoQuantity { e_corr = 0, e_sep = 1, split_scale = 2, split_bias = 3 };
+
+namespace detail {
+// An (alpha, s) table without its s(mu; alpha) constants would read mu as s: refused.
+[[noreturn]] inline void throw_no_shear(const Table& tab) {
+  throw std::invalid_argument("microfacet_albedo: table '" + tab.name() +
+                              "' is on (alpha, s) but the tables carry no shear constants (set "
+                              "MicrofacetAlbedoTables::shear, e.g. from microfacet_albedo_tables)");
+}
+// One directional table read at (mu, alpha[, p]); s is the sheared coordinate when t.shear.
+inline double microfacet_albedo_read(const MicrofacetAlbedoTables& t, std::size_t q, double mu, double alpha, double s,
+                                     double p, OutOfDomain policy) {
+  const Table& tab = *t.e[q];
+  if (tab.rank() == 3) {
+    const double x[3] = {p, alpha, mu};
+    return tab.eval(x, policy);
+  }
+  if (t.shear) return tab.eval2(alpha, s, policy);
+  if (tab.axis(1).name == schema::microfacet_albedo::kS.name) [[unlikely]] throw_no_shear(tab);
+  return tab.eval2(alpha, mu, policy);
+}
+}  // namespace detail
+
 // E(mu) at roughness alpha (beta) [and kurtosis p for the 3-D tables]. Outside the tables'
 // ranges: policy clamp uses the nearest edge, error throws DomainError naming the axis.
 inline MicrofacetAlbedoValues microfacet_albedo(const MicrofacetAlbedoTables& t, double mu, double alpha,
@@ -141,23 +168,45 @@ inline MicrofacetAlbedoValues microfacet_albedo(const MicrofacetAlbedoTables& t,
   std::array<double, 4> v{};
   // The four (alpha, s) tables share their axes (one generator call): s once.
   const double s = t.shear ? detail::sheared_coordinate(*t.shear, *t.e[0], mu, alpha, policy) : 0.0;
-  for (std::size_t q = 0; q < 4; ++q) {
-    const Table& tab = *t.e[q];
-    if (tab.rank() == 3) {
-      const double x[3] = {p, alpha, mu};
-      v[q] = tab.eval(x, policy);
-    } else if (t.shear) {
-      v[q] = tab.eval2(alpha, s, policy);
-    } else if (tab.axis(1).name == schema::microfacet_albedo::kS.name) [[unlikely]] {
-      // An (alpha, s) table without its s(mu; alpha) constants would read mu as s.
-      throw std::invalid_argument("microfacet_albedo: table '" + tab.name() +
-                                  "' is on (alpha, s) but the tables carry no shear constants (set "
-                                  "MicrofacetAlbedoTables::shear, e.g. from microfacet_albedo_tables)");
-    } else {
-      v[q] = tab.eval2(alpha, mu, policy);
-    }
-  }
+  for (std::size_t q = 0; q < 4; ++q) v[q] = detail::microfacet_albedo_read(t, q, mu, alpha, s, p, policy);
   return {v[0], v[1], v[2], v[3]};
+}
+// One of the four quantities: one table read instead of four.
+inline double microfacet_albedo(const MicrofacetAlbedoTables& t, MicrofacetAlbedoQuantity quantity, double mu,
+                                double alpha, double p = 1.0, OutOfDomain policy = OutOfDomain::clamp) {
+  const double s = t.shear ? detail::sheared_coordinate(*t.shear, *t.e[0], mu, alpha, policy) : 0.0;
+  return detail::microfacet_albedo_read(t, static_cast<std::size_t>(quantity), mu, alpha, s, p, policy);
+}
+
+// Batched: out[i] = microfacet_albedo(t, quantity, mu[i], alpha[i], p[i], policy) bit for bit
+// (tests/test_lookup_family_batch.cpp). p empty means p = 1 for every point (it is read only by
+// the 3-D tables). The table coordinates (s(mu; alpha) for the sheared tables) are formed in
+// chunks on the stack and read by Table::eval_batch (AVX2 where the CPU has it); no allocation.
+// Throws std::invalid_argument on a size mismatch; with policy error, DomainError at the first
+// point outside the domain (earlier chunks are written).
+inline void microfacet_albedo_batch(const MicrofacetAlbedoTables& t, MicrofacetAlbedoQuantity quantity,
+                                    std::span<const double> mu, std::span<const double> alpha,
+                                    std::span<const double> p, std::span<double> out,
+                                    OutOfDomain policy = OutOfDomain::clamp) {
+  detail::check_batch_sizes("microfacet_albedo_batch (mu)", mu.size(), out.size());
+  detail::check_batch_sizes("microfacet_albedo_batch (alpha)", alpha.size(), out.size());
+  if (!p.empty()) detail::check_batch_sizes("microfacet_albedo_batch (p)", p.size(), out.size());
+  const Table& tab = *t.e[static_cast<std::size_t>(quantity)];
+  if (tab.rank() == 3) {
+    detail::batch_by_chunks<3>(tab, out.size(), out.data(), policy, [&](std::size_t start, std::size_t m, double* x) {
+      for (std::size_t j = 0; j < m; ++j)
+        x[3 * j] = p.empty() ? 1.0 : p[start + j], x[3 * j + 1] = alpha[start + j], x[3 * j + 2] = mu[start + j];
+    });
+    return;
+  }
+  if (!t.shear && tab.axis(1).name == schema::microfacet_albedo::kS.name) [[unlikely]] detail::throw_no_shear(tab);
+  detail::batch_by_chunks<2>(tab, out.size(), out.data(), policy, [&](std::size_t start, std::size_t m, double* x) {
+    for (std::size_t j = 0; j < m; ++j) {
+      const double a = alpha[start + j], u = mu[start + j];
+      x[2 * j] = a;
+      x[2 * j + 1] = t.shear ? detail::sheared_coordinate(*t.shear, *t.e[0], u, a, policy) : u;
+    }
+  });
 }
 
 // E_avg at roughness alpha [kurtosis p]. Throws std::invalid_argument without average tables.
@@ -177,9 +226,36 @@ inline MicrofacetAlbedoAvgValues microfacet_albedo_avg(const MicrofacetAlbedoTab
 // hemispherical Fresnel average f_avg (fresnel_avg_conductor): f_ms F_ms is the lobe to add.
 inline double kulla_conty_lobe(const MicrofacetAlbedoTables& t, double mu_o, double mu_i, double alpha, double p = 1.0,
                                OutOfDomain policy = OutOfDomain::clamp) {
-  const double e_o = microfacet_albedo(t, mu_o, alpha, p, policy).e_corr;
-  const double e_i = microfacet_albedo(t, mu_i, alpha, p, policy).e_corr;
+  constexpr auto e_corr = MicrofacetAlbedoQuantity::e_corr;
+  const double e_o = microfacet_albedo(t, e_corr, mu_o, alpha, p, policy);
+  const double e_i = microfacet_albedo(t, e_corr, mu_i, alpha, p, policy);
   return schema::microfacet_albedo::kulla_conty_lobe_formula(e_o, e_i, microfacet_albedo_avg(t, alpha, p, policy).eavg_corr);
+}
+// Batched lobe: out[i] = kulla_conty_lobe(t, mu_o[i], mu_i[i], alpha[i], p[i], policy) bit for
+// bit; p empty means p = 1. The E reads go through microfacet_albedo_batch, E_avg per point
+// (one 1-D or 2-D read); chunks of 256 points on the stack, no allocation.
+inline void kulla_conty_lobe_batch(const MicrofacetAlbedoTables& t, std::span<const double> mu_o,
+                                   std::span<const double> mu_i, std::span<const double> alpha,
+                                   std::span<const double> p, std::span<double> out,
+                                   OutOfDomain policy = OutOfDomain::clamp) {
+  detail::check_batch_sizes("kulla_conty_lobe_batch (mu_o)", mu_o.size(), out.size());
+  detail::check_batch_sizes("kulla_conty_lobe_batch (mu_i)", mu_i.size(), out.size());
+  detail::check_batch_sizes("kulla_conty_lobe_batch (alpha)", alpha.size(), out.size());
+  if (!p.empty()) detail::check_batch_sizes("kulla_conty_lobe_batch (p)", p.size(), out.size());
+  constexpr std::size_t C = 256;
+  alignas(32) double e_i[C];
+  for (std::size_t start = 0; start < out.size(); start += C) {
+    const std::size_t m = std::min(C, out.size() - start);
+    const auto part = [&](std::span<const double> v) { return v.empty() ? v : v.subspan(start, m); };
+    const std::span<double> o = out.subspan(start, m);
+    microfacet_albedo_batch(t, MicrofacetAlbedoQuantity::e_corr, part(mu_o), part(alpha), part(p), o, policy);
+    microfacet_albedo_batch(t, MicrofacetAlbedoQuantity::e_corr, part(mu_i), part(alpha), part(p), {e_i, m}, policy);
+    for (std::size_t j = 0; j < m; ++j) {
+      const double pj = p.empty() ? 1.0 : p[start + j];
+      o[j] = schema::microfacet_albedo::kulla_conty_lobe_formula(
+          o[j], e_i[j], microfacet_albedo_avg(t, alpha[start + j], pj, policy).eavg_corr);
+    }
+  }
 }
 inline double kulla_conty_fresnel_factor(const MicrofacetAlbedoTables& t, double f_avg, double alpha, double p = 1.0,
                                          OutOfDomain policy = OutOfDomain::clamp) {
