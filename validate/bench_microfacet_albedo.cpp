@@ -55,6 +55,40 @@ void register_benchmarks(const BenchContext& ctx) {
           per_call(state, pts->size() / 2);
           state.counters["max_abs_err_E_corr"] = err;
         });
+        // One quantity (E_corr) per point: scalar calls against microfacet_albedo_batch.
+        benchmark::RegisterBenchmark(("microfacet_albedo/table/" + n + "_" + v + "_E_corr_scalar").c_str(),
+                                     [pts, ts, t](benchmark::State& state) {
+                                       for (auto _ : state)
+                                         for (std::size_t i = 0; i < pts->size(); i += 2)
+                                           benchmark::DoNotOptimize(lookup::microfacet_albedo(
+                                               *t, lookup::MicrofacetAlbedoQuantity::e_corr, (*pts)[i], (*pts)[i + 1]));
+                                       per_call(state, pts->size() / 2);
+                                     });
+        benchmark::RegisterBenchmark(("microfacet_albedo/table/" + n + "_" + v + "_E_corr_batch").c_str(),
+                                     [pts, ts, t](benchmark::State& state) {
+                                       std::vector<double> mu, alpha, out(pts->size() / 2);
+                                       for (std::size_t i = 0; i < pts->size(); i += 2)
+                                         mu.push_back((*pts)[i]), alpha.push_back((*pts)[i + 1]);
+                                       for (auto _ : state) {
+                                         lookup::microfacet_albedo_batch(*t, lookup::MicrofacetAlbedoQuantity::e_corr, mu,
+                                                                         alpha, {}, out);
+                                         benchmark::DoNotOptimize(out.data());
+                                       }
+                                       per_call(state, out.size());
+                                     });
+        if (precise)
+          benchmark::RegisterBenchmark(("microfacet_albedo/table/" + n + "_kulla_conty_lobe_batch").c_str(),
+                                       [pts, ts, t](benchmark::State& state) {
+                                         std::vector<double> mu_o, mu_i, alpha;
+                                         for (std::size_t i = 0; i + 2 < pts->size(); i += 2)
+                                           mu_o.push_back((*pts)[i]), mu_i.push_back((*pts)[i + 2]), alpha.push_back((*pts)[i + 1]);
+                                         std::vector<double> out(mu_o.size());
+                                         for (auto _ : state) {
+                                           lookup::kulla_conty_lobe_batch(*t, mu_o, mu_i, alpha, {}, out);
+                                           benchmark::DoNotOptimize(out.data());
+                                         }
+                                         per_call(state, out.size());
+                                       });
         if (precise)
           benchmark::RegisterBenchmark(("microfacet_albedo/table/" + n + "_kulla_conty_lobe").c_str(),
                                        [pts, ts, t](benchmark::State& state) {
