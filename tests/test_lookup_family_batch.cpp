@@ -1,6 +1,6 @@
 // The family batched lookups (HfuncTable::eval_batch, smith_gbeckmann_g1_batch,
 // ghs_sigma_rel2_batch, GhsSigmaRelMaterial::eval_batch, microfacet_albedo_batch,
-// kulla_conty_lobe_batch) against their scalar forms on the
+// kulla_conty_lobe_batch, ls_plane_albedo_batch, hazy_gloss_albedo_batch, htsg_distribution_batch) against their scalar forms on the
 // committed tables, with NaN, infinities, out-of-range values and ragged batch sizes: bit for
 // bit where every axis transform rounds as its scalar form (sqrt, x^(1/4), identity, x/(k+x),
 // and every transform on the generic path), within the derived bound of the vector log
@@ -18,7 +18,10 @@
 
 #include "lookup/detail/table_simd.hpp"
 #include "lookup/ghs_sigma_rel.hpp"
+#include "lookup/hazy_gloss.hpp"
 #include "lookup/hfunc.hpp"
+#include "lookup/htsg.hpp"
+#include "lookup/ls.hpp"
 #include "lookup/microfacet_albedo.hpp"
 #include "lookup/table_set.hpp"
 #include "lookup/smith_gbeckmann.hpp"
@@ -240,4 +243,49 @@ TEST_CASE("microfacet_albedo_batch and kulla_conty_lobe_batch against their scal
     CHECK_THROWS_AS(microfacet_albedo_batch(t, MicrofacetAlbedoQuantity::e_corr, inside, a3, {}, out, OutOfDomain::error),
                     DomainError);
   }
+}
+
+TEST_CASE("ls_plane_albedo_batch, hazy_gloss_albedo_batch and htsg_distribution_batch against their scalar lookups") {
+  const LoadedTable ls_t = load_table(kTables / "ls.h5", "ls_albedo");
+  const LsAlbedoTable ls(ls_t.table);
+  const LoadedTable hg_t = load_table(kTables / "hazy_gloss.h5", "hazy_gloss_albedo_beckmann_compound_probe_a");
+  const HazyGlossAlbedoTable hg(hg_t.table, schema::hazy_gloss::albedo_dataset(1, true));
+  const LoadedTable ht_t = load_table(kTables / "htsg.h5", "htsg_log_distribution");
+  const HtsgDistributionTable ht(ht_t.table);
+  // ln Dhat moves by <= the vector-log bound on the ln g axis, so Dhat by that factor.
+  const double ln_bound = log_bound(ht_t.table, {0});
+  for (bool avx2 : {true, false}) {
+    detail::set_avx2_enabled(avx2);
+    std::mt19937_64 rng(11);
+    for (std::size_t n : kSizes) {
+      std::vector<double> c(n), mu(n), g(n), X(n), a(n, -7.0), h(n, -7.0), d(n, -7.0);
+      for (std::size_t i = 0; i < n; ++i) {
+        c[i] = awkward(rng, 0, 1), mu[i] = awkward(rng, 0, 1);
+        g[i] = std::exp(awkward(rng, std::log(1e-3), std::log(1e4))), X[i] = awkward(rng, -128, 128);
+      }
+      ls_plane_albedo_batch(ls, c, mu, a);
+      hazy_gloss_albedo_batch(hg, mu, h);
+      htsg_distribution_batch(ht, g, X, d);
+      int bad_ls = 0, bad_hg = 0, nan_mismatch = 0;
+      double worst = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        bad_ls += !same_bits(a[i], ls_plane_albedo(ls, c[i], mu[i]));
+        bad_hg += !same_bits(h[i], hazy_gloss_albedo(hg, mu[i]));
+        const double one = htsg_distribution(ht, g[i], X[i]);
+        if ((one != one) != (d[i] != d[i])) ++nan_mismatch;
+        else if (one == one && one > 0) worst = std::max(worst, std::abs(std::log(d[i] / one)));
+        else if (one == one && !(d[i] == one)) ++nan_mismatch;
+      }
+      INFO("avx2 " << avx2 << ", n = " << n << ": max |ln(batch / scalar)| " << worst << ", bound " << ln_bound);
+      CHECK(bad_ls == 0);
+      CHECK(bad_hg == 0);
+      CHECK(nan_mismatch == 0);
+      CHECK(worst <= (avx2 ? ln_bound + 4e-16 : 0.0));
+    }
+  }
+  detail::set_avx2_enabled(true);
+  std::vector<double> x3(3), x2(2), out(3);
+  CHECK_THROWS_AS(ls_plane_albedo_batch(ls, x3, x2, out), std::invalid_argument);
+  CHECK_THROWS_AS(hazy_gloss_albedo_batch(hg, x2, out), std::invalid_argument);
+  CHECK_THROWS_AS(htsg_distribution_batch(ht, x2, x3, out), std::invalid_argument);
 }

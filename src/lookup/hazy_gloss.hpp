@@ -5,6 +5,8 @@
 //   const brdftab::lookup::HazyGlossAlbedoTable t(
 //       tables.table("hazy_gloss.h5", "hazy_gloss_albedo_ggx_patch_probe_a"));
 //   double a = hazy_gloss_albedo(t, 0.5);
+#include <span>
+
 #include "lookup/hazy_gloss_schema.hpp"
 #include "lookup/table.hpp"
 
@@ -22,6 +24,11 @@ class HazyGlossAlbedoTable {
 // A(mu); outside the table's mu range: clamp (policy clamp) or DomainError naming mu.
 inline double hazy_gloss_albedo(const HazyGlossAlbedoTable& t, double mu, OutOfDomain policy = OutOfDomain::clamp) {
   return t.table().eval1(mu, policy);
+}
+// Batched: out[i] = hazy_gloss_albedo(t, mu[i], policy) (a rank-1 batch reads mu as its points).
+inline void hazy_gloss_albedo_batch(const HazyGlossAlbedoTable& t, std::span<const double> mu, std::span<double> out,
+                                    OutOfDomain policy = OutOfDomain::clamp) {
+  t.table().eval_batch(mu, out, policy);
 }
 
 }  // namespace brdftab::lookup

@@ -7,9 +7,11 @@
 //   double k = ls_kd(kd, c);           // spherical albedo of a medium of albedo c
 //   double c = ls_c_from_kd(kd, 0.6);  // the particle albedo that gives diffuse colour 0.6
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <string>
 
+#include "lookup/batch_chunks.hpp"
 #include "lookup/ls_schema.hpp"
 #include "lookup/number_format.hpp"
 #include "lookup/table.hpp"
@@ -60,6 +62,16 @@ class LsAlbedoTable {
 // A(c, mu), the plane albedo.
 inline double ls_plane_albedo(const LsAlbedoTable& t, double c, double mu, OutOfDomain policy = OutOfDomain::clamp) {
   return t.table().eval2(c, mu, policy);
+}
+// Batched: out[i] = ls_plane_albedo(t, c[i], mu[i], policy) (bit for bit on the table's
+// non-log axes; tests/test_lookup_family_batch.cpp); chunks on the stack, no allocation.
+inline void ls_plane_albedo_batch(const LsAlbedoTable& t, std::span<const double> c, std::span<const double> mu,
+                                  std::span<double> out, OutOfDomain policy = OutOfDomain::clamp) {
+  detail::check_batch_sizes("ls_plane_albedo_batch (c)", c.size(), out.size());
+  detail::check_batch_sizes("ls_plane_albedo_batch (mu)", mu.size(), out.size());
+  detail::batch_by_chunks<2>(t.table(), out.size(), out.data(), policy, [&](std::size_t start, std::size_t m, double* x) {
+    for (std::size_t j = 0; j < m; ++j) x[2 * j] = c[start + j], x[2 * j + 1] = mu[start + j];
+  });
 }
 
 }  // namespace brdftab::lookup
