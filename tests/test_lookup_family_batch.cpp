@@ -1,6 +1,7 @@
 // The family batched lookups (HfuncTable::eval_batch, smith_gbeckmann_g1_batch,
 // ghs_sigma_rel2_batch, GhsSigmaRelMaterial::eval_batch, microfacet_albedo_batch,
-// kulla_conty_lobe_batch, ls_plane_albedo_batch, hazy_gloss_albedo_batch, htsg_distribution_batch) against their scalar forms on the
+// kulla_conty_lobe_batch, ls_plane_albedo_batch, hazy_gloss_albedo_batch, htsg_distribution_batch,
+// filip_brdf_batch, HpAlbedoMaterial::eval_batch_cos) against their scalar forms on the
 // committed tables, with NaN, infinities, out-of-range values and ragged batch sizes: bit for
 // bit where every axis transform rounds as its scalar form (sqrt, x^(1/4), identity, x/(k+x),
 // and every transform on the generic path), within the derived bound of the vector log
@@ -18,8 +19,10 @@
 
 #include "lookup/detail/table_simd.hpp"
 #include "lookup/ghs_sigma_rel.hpp"
+#include "lookup/filip.hpp"
 #include "lookup/hazy_gloss.hpp"
 #include "lookup/hfunc.hpp"
+#include "lookup/hp.hpp"
 #include "lookup/htsg.hpp"
 #include "lookup/ls.hpp"
 #include "lookup/microfacet_albedo.hpp"
@@ -288,4 +291,51 @@ TEST_CASE("ls_plane_albedo_batch, hazy_gloss_albedo_batch and htsg_distribution_
   CHECK_THROWS_AS(ls_plane_albedo_batch(ls, x3, x2, out), std::invalid_argument);
   CHECK_THROWS_AS(hazy_gloss_albedo_batch(hg, x2, out), std::invalid_argument);
   CHECK_THROWS_AS(htsg_distribution_batch(ht, x2, x3, out), std::invalid_argument);
+}
+
+TEST_CASE("filip_brdf_batch equals the scalar lookup bit for bit") {
+  const LoadedTable lt = load_table(kTables / "filip.h5", "filip_brdf_brushed");
+  const FilipBrdfTable t(lt.table);
+  constexpr double pi = std::numbers::pi;
+  for (bool avx2 : {true, false}) {
+    detail::set_avx2_enabled(avx2);
+    std::mt19937_64 rng(12);
+    for (std::size_t n : kSizes) {
+      std::vector<double> ti(n), pi_(n), to(n), po(n), out(n, -7.0);
+      for (std::size_t i = 0; i < n; ++i)
+        ti[i] = awkward(rng, 0, pi / 2), to[i] = awkward(rng, 0, pi / 2), pi_[i] = awkward(rng, -7, 7), po[i] = awkward(rng, -7, 7);
+      filip_brdf_batch(t, ti, pi_, to, po, out);
+      int bad = 0;
+      for (std::size_t i = 0; i < n; ++i) bad += !same_bits(out[i], filip_brdf(t, ti[i], pi_[i], to[i], po[i]));
+      INFO("avx2 " << avx2 << ", n = " << n);
+      CHECK(bad == 0);
+    }
+  }
+  detail::set_avx2_enabled(true);
+  std::vector<double> x3(3), x2(2), out(3);
+  CHECK_THROWS_AS(filip_brdf_batch(t, x3, x3, x2, x3, out), std::invalid_argument);
+}
+
+TEST_CASE("HpAlbedoMaterial eval_batch_cos equals the scalar lookup bit for bit") {
+  TableSet ts(kTables);
+  const HpAlbedoMaterial nickel(ts, "hp.h5", "nickel_g");
+  for (bool avx2 : {true, false}) {
+    detail::set_avx2_enabled(avx2);
+    std::mt19937_64 rng(13);
+    for (std::size_t n : kSizes) {
+      std::vector<double> c(n), r(n, -7.0), d(n, -7.0), l(n, -7.0);
+      for (std::size_t i = 0; i < n; ++i) c[i] = i % 9 == 0 ? 1e-17 : awkward(rng, 0, 1);
+      nickel.eval_batch_cos(c, r, d, l);
+      int bad = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const HpAlbedoParts p = nickel.at_cos(c[i]);
+        bad += !same_bits(r[i], p.reflection) + !same_bits(d[i], p.diffraction) + !same_bits(l[i], p.layer);
+      }
+      INFO("avx2 " << avx2 << ", n = " << n);
+      CHECK(bad == 0);
+    }
+  }
+  detail::set_avx2_enabled(true);
+  std::vector<double> c(3), r(3), d(2), l(3);
+  CHECK_THROWS_AS(nickel.eval_batch_cos(c, r, d, l), std::invalid_argument);
 }

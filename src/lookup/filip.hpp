@@ -22,6 +22,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
+
+#include "lookup/batch_chunks.hpp"
 
 #include "lookup/filip_schema.hpp"
 #include "lookup/table.hpp"
@@ -59,6 +62,23 @@ inline double filip_brdf(const FilipBrdfTable& t, double theta_i, double phi_i, 
   filip_detail::reduce_azimuths(phi_i, phi_o);
   const double x[4] = {theta_i, phi_i, theta_o, phi_o};
   return std::max(0.0, std::exp(t.table().eval(x, policy)) - schema::filip::kLogFloor);
+}
+// Batched: out[i] = filip_brdf(t, theta_i[i], phi_i[i], theta_o[i], phi_o[i], policy) bit for bit
+// (the 4-D table's axes are identity; tests/test_lookup_family_batch.cpp). Chunks on the stack,
+// no allocation; throws std::invalid_argument on a size mismatch.
+inline void filip_brdf_batch(const FilipBrdfTable& t, std::span<const double> theta_i, std::span<const double> phi_i,
+                             std::span<const double> theta_o, std::span<const double> phi_o, std::span<double> out,
+                             OutOfDomain policy = OutOfDomain::clamp) {
+  for (std::size_t size : {theta_i.size(), phi_i.size(), theta_o.size(), phi_o.size()})
+    detail::check_batch_sizes("filip_brdf_batch", size, out.size());
+  detail::batch_by_chunks<4>(t.table(), out.size(), out.data(), policy, [&](std::size_t start, std::size_t m, double* x) {
+    for (std::size_t j = 0; j < m; ++j) {
+      double pi = phi_i[start + j], po = phi_o[start + j];
+      filip_detail::reduce_azimuths(pi, po);
+      x[4 * j] = theta_i[start + j], x[4 * j + 1] = pi, x[4 * j + 2] = theta_o[start + j], x[4 * j + 3] = po;
+    }
+  });
+  for (double& v : out) v = std::max(0.0, std::exp(v) - schema::filip::kLogFloor);
 }
 
 struct FilipSample {

@@ -6,8 +6,11 @@
 //   const brdftab::lookup::HpAlbedoMaterial nickel(tables, "hp.h5", "nickel_g");
 //   brdftab::lookup::HpAlbedoParts a = nickel(0.3);   // a.reflection, a.diffraction, a.layer, a.total()
 #include <cmath>
+#include <span>
 #include <string>
+#include <utility>
 
+#include "lookup/batch_chunks.hpp"
 #include "lookup/hp_schema.hpp"
 #include "lookup/table_set.hpp"
 
@@ -33,6 +36,22 @@ class HpAlbedoMaterial {
   HpAlbedoParts at_cos(double cos_theta_i, OutOfDomain policy = OutOfDomain::clamp) const {
     const double m = cos_theta_i < 1e-15 ? 0.0 : cos_theta_i;  // cos(pi/2) = 6e-17
     return {r_->table.eval1(m, policy), d_->table.eval1(m, policy), l_->table.eval1(m, policy)};
+  }
+  // Batched: reflection[i], diffraction[i], layer[i] = at_cos(cos_theta_i[i], policy) bit for bit
+  // (tests/test_lookup_family_batch.cpp); chunks on the stack, no allocation.
+  void eval_batch_cos(std::span<const double> cos_theta_i, std::span<double> reflection, std::span<double> diffraction,
+                      std::span<double> layer, OutOfDomain policy = OutOfDomain::clamp) const {
+    const std::pair<const LoadedTable*, std::span<double>> parts[3] = {{r_, reflection}, {d_, diffraction}, {l_, layer}};
+    for (const auto& [t, out] : parts)
+      detail::check_batch_sizes("HpAlbedoMaterial::eval_batch_cos", cos_theta_i.size(), out.size());
+    for (const auto& [t, out] : parts) {
+      detail::batch_by_chunks<1>(t->table, out.size(), out.data(), policy, [&](std::size_t start, std::size_t m, double* x) {
+        for (std::size_t j = 0; j < m; ++j) {
+          const double c = cos_theta_i[start + j];
+          x[j] = c < 1e-15 ? 0.0 : c;
+        }
+      });
+    }
   }
   // The `hp_material` attribute of the tables (the material's parameters).
   std::string material_text() const { return r_->info.attribute_string("hp_material"); }
