@@ -186,7 +186,11 @@ TEST_CASE("bench --pareto quick run: every quantity's CSV is well formed and san
                                           "htsg_distribution",
                                           "htsg_shadowing",
                                           "htsg_sigma0",
-                                          "hazy_gloss_albedo"};
+                                          "li_torrance_brdf",
+                                          "hazy_gloss_albedo",
+                                          "hp_brdf",
+                                          "hp_albedo",
+                                          "filip_brdf"};
   std::set<std::string> found;
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".csv") found.insert(e.path().stem().string().substr(std::string("pareto_").size()));
