@@ -2,6 +2,8 @@
 // mask corrected): f(theta_i, phi_i, theta_o, phi_o) of the two default materials (fabric and
 // brushed, gen::filip::Config{}), points alternating between them, max relative error of f:
 //  - exact: the closed form (numerics::filip_brdf), the reference;
+//  - printed: the same with the support mask as printed (validate/ERRATA.md: 1 away from the
+//    highlight, 0 on it);
 //  - the per-material 4-D tables of ln(f + 1e-10) looked up by lookup::filip_brdf (as
 //    `eval filip_brdf --method table`): the committed tables of --tables (9x7x33x49, float32
 //    multilinear) and their every-2nd-node copies (pareto::subsampled: the tables the generator
@@ -120,6 +122,21 @@ std::vector<Quantity> pareto_quantities(const Options& o) {
     sink = s;
   }, 0.005);
   q.rows.push_back(r);
+
+  {
+    auto pr = [&](std::size_t i) {
+      return numerics::filip_brdf(cfg.materials[i % nm].params, numerics::filip_direction(ti[i], pi[i]),
+                                  numerics::filip_direction(to[i], po[i]), numerics::FilipMaskVariant::as_printed);
+    };
+    Point p{"printed", "support mask as printed (Sec. 3.1 C)", "", "", 0, 0, max_rel_error(ref, pr),
+            "exact (numerics::filip_brdf, mask corrected)"};
+    p.ns_per_value = ns_per_value(q.points, [&] {
+      double s = 0;
+      for (std::size_t i = 0; i < q.points; ++i) s += pr(i);
+      sink = s;
+    }, 0.005);
+    q.rows.push_back(p);
+  }
 
   std::string origin;
   const std::vector<Resolution> res = resolutions(o, cfg, origin);

@@ -13,7 +13,8 @@
 //    exact (numerics::hp_albedo, adaptive quadrature, 10-100 ms per value: timed once as
 //    computed) at tolerances 1e-4 to 1e-7 against the per-material hp.h5 tables (49 nodes on
 //    cos theta_i, tol 1e-6) and their every-2nd and every-4th node copies, cubic and linear,
-//    float64 and float32. Reference: the exact albedo at tol 1e-9. Points: theta_i uniform in
+//    float64 and float32, and the albedo of the printed form. Reference: the exact albedo at
+//    tol 1e-9. Points: theta_i uniform in
 //    [0, 1.5].
 // Tables: those of --tables when the files are there (and hp.h5 holds the default materials);
 // otherwise (and in quick runs) tables built here by the generators at coarse steps.
@@ -61,7 +62,9 @@ struct ExactMaterial {
   numerics::HpMaterial m;
   numerics::HpExactIngredients ing;
   numerics::HpBrdf brdf;
-  explicit ExactMaterial(const numerics::HpMaterial& mat) : m(mat), ing(mat), brdf(mat, ing) {}
+  numerics::HpBrdf printed;  // the formulas as printed (validate/ERRATA.md), exact ingredients
+  explicit ExactMaterial(const numerics::HpMaterial& mat)
+      : m(mat), ing(mat), brdf(mat, ing), printed(mat, ing, numerics::HpForm::printed) {}
 };
 
 std::vector<std::unique_ptr<ExactMaterial>> exact_materials(const std::vector<gen::hp::Material>& ms) {
@@ -140,6 +143,18 @@ Quantity measure_brdf(const Options& o, const std::vector<gen::hp::Material>& ma
     sink = s;
   }, 0.005);
   q.rows.push_back(r);
+
+  {
+    auto pr = [&](std::size_t i) { return ex[i % ex.size()]->printed.eval(ti[i], to[i], ph[i]).total(); };
+    Point p{"printed", "Eq. 35, 43, 46, 49 as printed", "", "", 0, 0, max_rel_error(ref, pr),
+            "exact (corrected form, HpExactIngredients)"};
+    p.ns_per_value = ns_per_value(q.points, [&] {
+      double s = 0;
+      for (std::size_t i = 0; i < q.points; ++i) s += pr(i);
+      sink = s;
+    }, 0.005);
+    q.rows.push_back(p);
+  }
 
   std::string origin;
   std::unique_ptr<lookup::TableSet> set;
@@ -247,6 +262,14 @@ Quantity measure_albedo(const Options& o, const std::vector<gen::hp::Material>& 
     const double ns = (thread_cpu_seconds() - t0) / static_cast<double>(q.points) * 1e9;
     q.rows.push_back(Point{"exact", "tol " + lookup::format_number(tol), "", "", 0, ns,
                            max_abs_error(ref, [&](std::size_t i) { return v[i]; }), ref_name});
+  }
+  {
+    std::vector<double> v(q.points);
+    t0 = thread_cpu_seconds();  // timed once, as computed
+    for (std::size_t i = 0; i < q.points; ++i) v[i] = numerics::hp_albedo(ex[i % ex.size()]->printed, ti[i], 1e-6).total();
+    const double ns = (thread_cpu_seconds() - t0) / static_cast<double>(q.points) * 1e9;
+    q.rows.push_back(Point{"printed", "Eq. 35, 43, 46, 49 as printed, tol 1e-06", "", "", 0, ns,
+                           max_abs_error(ref, [&](std::size_t i) { return v[i]; }), ref_name + " (corrected form)"});
   }
   std::string origin;
   const std::vector<AlbedoTables> sets = albedo_tables(o, mats, origin);
