@@ -16,6 +16,11 @@
 //    float64 and float32, and the albedo of the printed form. Reference: the exact albedo at
 //    tol 1e-9. Points: theta_i uniform in
 //    [0, 1.5].
+//  - hp_diffraction, the diffraction lobe without its colour term (not an eval quantity: the
+//    paper's approximation behind hp_brdf's lobe): Eq. 31 (numerics::hp_diffraction_eq31, the
+//    integral over the facets, adaptive quadrature, 10-800 ms per value) at tolerances 1e-3
+//    to 1e-6 against Eq. 32 (the approximation the model uses). Reference: Eq. 31 at tol 1e-8.
+//    6 points (3 in quick runs), angles as for hp_brdf.
 // Tables: those of --tables when the files are there (and hp.h5 holds the default materials);
 // otherwise (and in quick runs) tables built here by the generators at coarse steps.
 #include <cmath>
@@ -36,6 +41,7 @@
 #include "lookup/table_set.hpp"
 #include "numerics/hp_albedo.hpp"
 #include "numerics/hp_brdf.hpp"
+#include "numerics/hp_diffraction_integral.hpp"
 #include "validate/pareto.hpp"
 
 namespace brdftab::validate::hp {
@@ -304,12 +310,48 @@ Quantity measure_albedo(const Options& o, const std::vector<gen::hp::Material>& 
   return q;
 }
 
+// ---- hp_diffraction: the diffraction lobe before the paper's approximation (Eq. 31) against it (Eq. 32).
+Quantity measure_diffraction(const Options& o, const std::vector<std::unique_ptr<ExactMaterial>>& ex) {
+  Quantity q{"hp_diffraction",
+             "rho_diff(theta_i, theta_o, phi), Holzschuch-Pacanowski diffraction lobe without colour: Eq. 31 against Eq. 32",
+             "max relative error", o.quick ? 3u : 6u, {}};
+  std::mt19937_64 rng(6363);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  std::vector<double> ti(q.points), to(q.points), ph(q.points), ref(q.points);
+  for (std::size_t i = 0; i < q.points; ++i) ti[i] = 1.5 * U(rng), to[i] = 1.5 * U(rng), ph[i] = 2 * std::numbers::pi * U(rng);
+  const double ref_tol = o.quick ? 1e-6 : 1e-8;
+  double t0 = thread_cpu_seconds();  // 10-800 ms per value: timed once, as computed
+  for (std::size_t i = 0; i < q.points; ++i) ref[i] = numerics::hp_diffraction_eq31(ex[i % ex.size()]->brdf, ti[i], to[i], ph[i], ref_tol);
+  q.rows.push_back(Point{"exact", "Eq. 31, tol " + lookup::format_number(ref_tol), "", "", 0,
+                         (thread_cpu_seconds() - t0) / static_cast<double>(q.points) * 1e9, std::nullopt, "reference"});
+  const std::string src = "Eq. 31 by adaptive quadrature over the facets (hp_diffraction_eq31) at tol " + lookup::format_number(ref_tol);
+  for (double tol : o.quick ? std::vector<double>{1e-3} : std::vector<double>{1e-3, 1e-4, 1e-6}) {
+    std::vector<double> v(q.points);
+    t0 = thread_cpu_seconds();
+    for (std::size_t i = 0; i < q.points; ++i) v[i] = numerics::hp_diffraction_eq31(ex[i % ex.size()]->brdf, ti[i], to[i], ph[i], tol);
+    q.rows.push_back(Point{"exact", "Eq. 31, tol " + lookup::format_number(tol), "", "", 0,
+                           (thread_cpu_seconds() - t0) / static_cast<double>(q.points) * 1e9,
+                           max_rel_error(ref, [&](std::size_t i) { return v[i]; }), src});
+  }
+  auto eq32 = [&](std::size_t i) { return numerics::hp_diffraction_eq32_uncoloured(ex[i % ex.size()]->brdf, ti[i], to[i], ph[i]); };
+  Point p{"fit", "Eq. 32 (the model's lobe, uncoloured)", "", "", 0, 0, max_rel_error(ref, eq32), src};
+  volatile double sink = 0;
+  p.ns_per_value = ns_per_value(q.points, [&] {
+    double s = 0;
+    for (std::size_t i = 0; i < q.points; ++i) s += eq32(i);
+    sink = s;
+  });
+  (void)sink;
+  q.rows.push_back(p);
+  return q;
+}
+
 }  // namespace
 
 std::vector<Quantity> pareto_quantities(const Options& o) {
   const std::vector<gen::hp::Material> mats = gen::hp::default_materials();
   const auto ex = exact_materials(mats);
-  return {measure_brdf(o, mats, ex), measure_albedo(o, mats, ex)};
+  return {measure_brdf(o, mats, ex), measure_albedo(o, mats, ex), measure_diffraction(o, ex)};
 }
 
 }  // namespace brdftab::validate::hp
