@@ -187,6 +187,7 @@ TEST_CASE("bench --pareto quick run: every quantity's CSV is well formed and san
                                           "htsg_shadowing",
                                           "htsg_sigma0",
                                           "li_torrance_brdf",
+                                          "li_torrance_rho_spec",
                                           "hazy_gloss_albedo",
                                           "hp_brdf",
                                           "hp_albedo",
