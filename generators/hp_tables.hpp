@@ -28,6 +28,9 @@ struct HpSharedTables {
       : g1(t.table(std::string(schema::smith_gbeckmann::kFile), "smith_gbeckmann_g1_precise")),
         sigma_rel(t.get(std::string(schema::ghs_sigma_rel::kFile), std::string(schema::ghs_sigma_rel::kGrid.name))),
         fdr(t.table(std::string(schema::fresnel::kFile), std::string(schema::fresnel::kDr.name))) {}
+  // From tables held elsewhere (validate/pareto_hp.cpp: copies at other resolutions and precisions).
+  HpSharedTables(lookup::SmithGBeckmannTable g, lookup::GhsSigmaRelGrid s, lookup::FresnelDrTable f)
+      : g1(g), sigma_rel(s), fdr(f) {}
 };
 
 class HpTableIngredients final : public numerics::HpIngredients {

@@ -12,10 +12,21 @@
 //  - sigma0(sigma, tau, theta_i, theta_r), the effective roughness (max relative error):
 //    exact (Lambert W) against Li & Torrance's Eq. 8 fit. Reference: the root of HTSG's
 //    equation found numerically (htsg_sigma0_root).
-// Surfaces: sigma = 1, tau log-uniform in [1, 100] (rms slope sigma/tau in [0.01, 1]), theta
+//  - f, Li & Torrance's comprehensive BRDF (Eq. 3, 9; numerics::li_torrance_brdf, max relative
+//    error of f = f_dd: k_dd = 1, the other components 0): exact (the HTSG pieces: Fresnel
+//    equations, Smith shadowing, sigma0 root, D series), the reference, against the fit
+//    (Schlick, Eq. 6, 8, 10). Surfaces: sigma log-uniform in [0.05, 1] um, tau/sigma
+//    log-uniform in [1, 100], lambda = 0.55 um, f0 = 0.04; theta_i, theta_o uniform in
+//    [0, 1.5], phi uniform in [0, 2 pi], kept where the exact f >= 1e-3 / sr (about half of
+//    them; far off the lobe f falls to 1e-50 and below, and underflows to 0 in both forms).
+//  - rho_spec, the reflectance of the mirror delta (Eq. 3 corrected; max absolute error):
+//    exact against the fit as for f, the same surfaces, theta_i uniform in [0, 1.5]. (The
+//    outgoing direction does not enter: it is computed at theta_o = 0.)
+// Surfaces (S, sigma0): sigma = 1, tau log-uniform in [1, 100] (rms slope sigma/tau in [0.01, 1]), theta
 // uniform in [0, 1.5].
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -26,6 +37,7 @@
 #include "numerics/htsg_distribution_hankel.hpp"
 #include "numerics/htsg_shadowing.hpp"
 #include "numerics/htsg_sigma0.hpp"
+#include "numerics/li_torrance_brdf.hpp"
 #include "validate/pareto.hpp"
 
 namespace brdftab::validate::htsg {
@@ -148,10 +160,55 @@ Quantity measure_sigma0(const Options& o) {
   return q;
 }
 
+Quantity measure_li_torrance_brdf(const Options& o) {
+  Quantity q{"li_torrance_brdf", "f(theta_i, theta_o, phi), Li-Torrance BRDF directional diffraction (Eq. 9), HTSG pieces against the fits",
+             "max relative error", o.quick ? 64u : 1024u, {}};
+  std::mt19937_64 rng(4444);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  std::vector<numerics::LiTorranceParams> p(q.points);
+  std::vector<double> ti(q.points), to(q.points), ph(q.points), ref(q.points);
+  const auto kind_exact = numerics::LiTorrancePieces::exact, kind_fit = numerics::LiTorrancePieces::fit;
+  for (std::size_t i = 0; i < q.points;) {  // points on the visible lobe only: exact f >= 1e-3 / sr
+    p[i].sigma = 0.05 * std::pow(20.0, U(rng)), p[i].tau = p[i].sigma * std::pow(100.0, U(rng));
+    p[i].lambda = 0.55, p[i].f0 = 0.04, p[i].k_dd = 1;
+    ti[i] = 1.5 * U(rng), to[i] = 1.5 * U(rng), ph[i] = 2 * std::numbers::pi * U(rng);
+    ref[i] = numerics::li_torrance_brdf(p[i], ti[i], to[i], ph[i], kind_exact).f;
+    if (ref[i] >= 1e-3) ++i;
+  }
+  q.rows.push_back(reference_row("HTSG pieces", q.points, [&](std::size_t i) {
+    return numerics::li_torrance_brdf(p[i], ti[i], to[i], ph[i], kind_exact).f;
+  }));
+  add_rows(q, ref, true, "exact (li_torrance_brdf with the HTSG pieces)",
+           {{"fit", "Li-Torrance Schlick, Eq. 6, 8, 10",
+             [&](std::size_t i) { return numerics::li_torrance_brdf(p[i], ti[i], to[i], ph[i], kind_fit).f; }}});
+  return q;
+}
+
+Quantity measure_li_torrance_rho_spec(const Options& o) {
+  Quantity q{"li_torrance_rho_spec", "rho_spec(theta_i), Li-Torrance mirror reflectance (Eq. 3 corrected), HTSG pieces against the fits",
+             "max absolute error", o.quick ? 64u : 1024u, {}};
+  std::mt19937_64 rng(4545);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  std::vector<numerics::LiTorranceParams> p(q.points);
+  std::vector<double> ti(q.points), ref(q.points);
+  auto rho = [&](std::size_t i, numerics::LiTorrancePieces k) { return numerics::li_torrance_brdf(p[i], ti[i], 0.0, 0.0, k).rho_spec; };
+  for (std::size_t i = 0; i < q.points; ++i) {
+    p[i].sigma = 0.05 * std::pow(20.0, U(rng)), p[i].tau = p[i].sigma * std::pow(100.0, U(rng));
+    p[i].lambda = 0.55, p[i].f0 = 0.04, p[i].k_dd = 1;
+    ti[i] = 1.5 * U(rng);
+    ref[i] = rho(i, numerics::LiTorrancePieces::exact);
+  }
+  q.rows.push_back(reference_row("HTSG pieces", q.points, [&](std::size_t i) { return rho(i, numerics::LiTorrancePieces::exact); }));
+  add_rows(q, ref, false, "exact (li_torrance_brdf with the HTSG pieces)",
+           {{"fit", "Li-Torrance Schlick, Eq. 6, 8", [&](std::size_t i) { return rho(i, numerics::LiTorrancePieces::fit); }}});
+  return q;
+}
+
 }  // namespace
 
 std::vector<Quantity> pareto_quantities(const Options& o) {
-  return {measure_distribution(o), measure_shadowing(o), measure_sigma0(o)};
+  return {measure_distribution(o), measure_shadowing(o), measure_sigma0(o), measure_li_torrance_brdf(o),
+          measure_li_torrance_rho_spec(o)};
 }
 
 }  // namespace brdftab::validate::htsg

@@ -11,7 +11,9 @@
   X(ls)                            \
   X(microfacet_albedo)              \
   X(htsg)                           \
-  X(hazy_gloss)
+  X(hazy_gloss)                     \
+  X(hp)                             \
+  X(filip)
 
 namespace brdftab::validate {
 
