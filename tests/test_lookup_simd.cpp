@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "lookup/detail/float32_widening.hpp"
 #include "lookup/detail/table_simd.hpp"
 #include "lookup/table.hpp"
 
@@ -18,14 +19,19 @@ using namespace brdftab::lookup;
 
 namespace {
 
-Table make_table(const std::vector<Axis>& axes, Storage s, Interpolation in) {
+// widen = false: a float32 table held as float32 and run by the float32 kernels.
+Table make_table(const std::vector<Axis>& axes, Storage s, Interpolation in, bool widen = true) {
   std::size_t size = 1;
   for (const auto& a : axes) size *= a.n;
   std::vector<double> v(size);
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> uni(-1.0, 1.0);
   for (auto& x : v) x = uni(rng);  // rough data: every node matters
-  return Table("t", axes, v, s, in);
+  detail::set_float32_widening(widen);
+  Table t("t", axes, v, s, in);
+  detail::set_float32_widening(true);
+  REQUIRE(t.widened() == (widen && s == Storage::float32));
+  return t;
 }
 
 // Points that hit every case: inside, on grid nodes, at and beyond both edges, NaN, +-inf.
@@ -113,14 +119,15 @@ TEST_CASE("batched lookups equal scalar lookups bit for bit on identity and alge
     for (int rank = 1; rank <= 4; ++rank)
       for (int transformed : {0, 1, 2})  // identity, transformed, mixed (identity and transformed axes)
         for (auto in : {Interpolation::linear, Interpolation::cubic})
-          for (auto st : {Storage::float32, Storage::float64}) {
+          for (int sv : {0, 1, 2}) {  // float32 widened, float32 run by the float32 kernels, float64
+            const Storage st = sv == 2 ? Storage::float64 : Storage::float32;
             std::vector<Axis> axes = axes_of(rank, false);
             for (std::size_t d = 0; d < axes.size(); ++d)
               if (transformed == 0 || (transformed == 2 && d % 2 == 1))
                 axes[d] = make_axis(axes[d].name, Transform::identity, -0.5, 1.5, axes[d].n);
             INFO("avx2 " << avx2 << ", rank " << rank << ", transformed " << transformed << ", "
-                         << interpolation_name(in) << ", " << storage_name(st));
-            batch_vs_scalar(make_table(axes, st, in), true);
+                         << interpolation_name(in) << ", " << storage_name(st) << (sv == 1 ? " unwidened" : ""));
+            batch_vs_scalar(make_table(axes, st, in, sv != 1), true);
           }
   }
   detail::set_avx2_enabled(true);
@@ -137,9 +144,10 @@ TEST_CASE("batched lookups on log axes: within the bound set by the vector log's
   // Plus the rounding of the weights and the sums, < 64 eps (2.25^rank) here.
   for (int rank = 1; rank <= 4; ++rank)
     for (auto in : {Interpolation::linear, Interpolation::cubic})
-      for (auto st : {Storage::float32, Storage::float64}) {
+      for (int sv : {0, 1, 2}) {  // float32 widened, float32 run by the float32 kernels, float64
+        const Storage st = sv == 2 ? Storage::float64 : Storage::float32;
         const auto axes = axes_of(rank, true);
-        const Table t = make_table(axes, st, in);
+        const Table t = make_table(axes, st, in, sv != 1);
         double dt = 0;
         for (const auto& a : axes) {
           const double umax = std::max(std::abs(a.u0), std::abs(a.u0 + (a.n - 1) * a.du));
@@ -156,6 +164,76 @@ TEST_CASE("batched lookups on log axes: within the bound set by the vector log's
           MESSAGE("log axes, rank 2, " << interpolation_name(in) << ": max |batch - scalar| = " << worst
                                        << " (bound " << bound << ")");
       }
+}
+
+TEST_CASE("float32 tables held widened to float64 equal the float32 kernels bit for bit") {
+  // Small float32 tables are held as their exact float64 widening and run by the float64
+  // kernels (kWidenFloat32MaxValues); the float32 kernels widen each value before any
+  // arithmetic, so every query must agree to the last bit with the same table held as
+  // float32: scalar and batched, AVX2 and generic, every rank, order and transform (log
+  // axes too: both batches use the same vector log), NaN, infinities, out-of-range values,
+  // grid points and ragged batch sizes.
+  int compared = 0;
+  for (bool avx2 : {true, false}) {
+    detail::set_avx2_enabled(avx2);
+    for (int rank = 1; rank <= 4; ++rank)
+      for (int kind : {0, 1, 2})  // identity, algebraic transforms, log transforms
+        for (auto in : {Interpolation::linear, Interpolation::cubic}) {
+          std::vector<Axis> axes = axes_of(rank, kind == 2);
+          if (kind == 0)
+            for (auto& a : axes) a = make_axis(a.name, Transform::identity, -0.5, 1.5, a.n);
+          const Table wide = make_table(axes, Storage::float32, in, true);
+          const Table narrow = make_table(axes, Storage::float32, in, false);
+          INFO("avx2 " << avx2 << ", rank " << rank << ", kind " << kind << ", " << interpolation_name(in));
+          CHECK(wide.storage() == Storage::float32);
+          CHECK(wide.bytes() == narrow.bytes());
+          CHECK(wide.memory_bytes() == 2 * narrow.memory_bytes());
+          const std::size_t r = axes.size();
+          for (std::size_t n : kSizes) {
+            const auto pts = awkward_points(axes, n, 300 + n);
+            std::vector<double> bw(n, -1.0), bn(n, -2.0);
+            wide.eval_batch(pts, bw);
+            narrow.eval_batch(pts, bn);
+            for (std::size_t i = 0; i < n; ++i) {
+              const double sw = wide.eval({pts.data() + r * i, r}), sn = narrow.eval({pts.data() + r * i, r});
+              if (!same_bits(bw[i], bn[i]) || !same_bits(sw, sn)) {
+                INFO("n = " << n << ", point " << i);
+                CHECK(bw[i] == bn[i]);
+                CHECK(sw == sn);
+              }
+              ++compared;
+            }
+          }
+          int idx[4] = {0, 0, 0, 0};
+          for (int k = 0; k < 50; ++k) {  // stored values: the float32 roundings
+            for (std::size_t d = 0; d < r; ++d) idx[d] = (k * 7 + static_cast<int>(d) * 3) % axes[d].n;
+            const std::span<const int> ix(idx, r);
+            CHECK(same_bits(wide.at_index(ix), narrow.at_index(ix)));
+            CHECK(static_cast<double>(static_cast<float>(wide.at_index(ix))) == wide.at_index(ix));
+          }
+        }
+  }
+  detail::set_avx2_enabled(true);
+  CHECK(compared == 2 * 4 * 3 * 2 * 488);  // 488 points over the 13 batch sizes
+}
+
+TEST_CASE("float32 tables above kWidenFloat32MaxValues stay float32 in memory") {
+  const int n = static_cast<int>(kWidenFloat32MaxValues);
+  const std::vector<double> v(kWidenFloat32MaxValues + 1, 0.25);
+  const Table at("at", {make_axis("x", Transform::identity, 0.0, 1.0, n)}, std::span(v.data(), v.size() - 1),
+                 Storage::float32, Interpolation::linear);
+  const Table above("above", {make_axis("x", Transform::identity, 0.0, 1.0, n + 1)}, v, Storage::float32,
+                    Interpolation::linear);
+  CHECK(at.widened());
+  CHECK(at.memory_bytes() == 8 * kWidenFloat32MaxValues);
+  CHECK_FALSE(above.widened());
+  CHECK(above.memory_bytes() == 4 * (kWidenFloat32MaxValues + 1));
+  CHECK(above.bytes() == at.bytes() + 4);
+  const double x[] = {0.3, 0.7};
+  std::vector<double> out(2);
+  above.eval_batch(x, out);
+  CHECK(out[0] == 0.25);
+  CHECK(out[1] == 0.25);
 }
 
 #if defined(__x86_64__)
@@ -234,18 +312,19 @@ TEST_CASE("scalar lookups with compile-time transforms (rank 1 and 2) equal the 
   for (Transform t0 : all)
     for (int t1i = -1; t1i < 7; ++t1i)  // -1: rank 1
       for (auto in : {Interpolation::linear, Interpolation::cubic})
-        for (auto st : {Storage::float32, Storage::float64}) {
+        for (int sv : {0, 1, 2}) {  // float32 widened, float32 run by the float32 kernels, float64
+          const Storage st = sv == 2 ? Storage::float64 : Storage::float32;
           std::vector<Axis> axes = {axis_for(t0, "a", 7)};
           if (t1i >= 0) axes.push_back(axis_for(all[t1i], "b", 6));
           INFO(transform_name(t0) << ", " << (t1i >= 0 ? transform_name(all[t1i]) : "-") << ", "
-                                  << interpolation_name(in) << ", " << storage_name(st));
+                                  << interpolation_name(in) << ", " << storage_name(st) << (sv == 1 ? " unwidened" : ""));
           // With AVX2 on, the batch of rank 1 and 2 runs the loops fixed per transform pair
           // (pipelined unless an axis is log); bit for bit without a log axis.
           const bool log_axis = t0 == Transform::log || t0 == Transform::log_x_minus_1 ||
                                 (t1i >= 0 && (all[t1i] == Transform::log || all[t1i] == Transform::log_x_minus_1));
           if (avx2 && log_axis) continue;
           detail::set_avx2_enabled(avx2);
-          const Table t = make_table(axes, st, in);
+          const Table t = make_table(axes, st, in, sv != 1);
           const std::size_t rank = axes.size(), n = 61;
           const auto pts = awkward_points(axes, n, 7 + tables);
           std::vector<double> generic(n);
@@ -260,5 +339,5 @@ TEST_CASE("scalar lookups with compile-time transforms (rank 1 and 2) equal the 
           ++tables;
         }
   detail::set_avx2_enabled(true);
-  CHECK(tables == 7 * 8 * 4 + 5 * 6 * 4);  // AVX2: the 5 non-log transforms, rank 1 and 5 x 5 pairs
+  CHECK(tables == 7 * 8 * 6 + 5 * 6 * 6);  // AVX2: the 5 non-log transforms, rank 1 and 5 x 5 pairs
 }

@@ -9,10 +9,12 @@
 
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <random>
 #include <string>
 
+#include "lookup/detail/float32_widening.hpp"
 #include "lookup/detail/table_simd.hpp"
 #include "lookup/table.hpp"
 #include "validate/bench.hpp"
@@ -50,8 +52,10 @@ std::vector<lookup::Axis> make_axes(int rank, int n, Axes kind) {
   return axes;
 }
 
-std::shared_ptr<Fixture> make_fixture(int rank, lookup::Interpolation interp, lookup::Storage storage, Axes kind) {
-  const int n = rank == 1 ? 256 : rank == 2 ? 64 : 16;
+// widen = false: a float32 table that runs the float32 kernels (lookup::kWidenFloat32MaxValues).
+std::shared_ptr<Fixture> make_fixture(int rank, lookup::Interpolation interp, lookup::Storage storage, Axes kind,
+                                      bool widen = true, int n = 0, std::size_t points = kPoints) {
+  if (n == 0) n = rank == 1 ? 256 : rank == 2 ? 64 : 16;
   const std::vector<lookup::Axis> axes = make_axes(rank, n, kind);
   // f of the grid coordinate u in [0, 1] along each axis (smooth in u, so errors are comparable).
   auto f = [&axes](const double* x, int rank) {
@@ -76,15 +80,17 @@ std::shared_ptr<Fixture> make_fixture(int rank, lookup::Interpolation interp, lo
     values[i] = f(x, rank);
   }
   auto fx = std::make_shared<Fixture>();
+  lookup::detail::set_float32_widening(widen);
   fx->table = lookup::Table("bench", axes, values, storage, interp);
+  lookup::detail::set_float32_widening(true);
   std::mt19937_64 rng(42);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
-  fx->points.resize(kPoints * rank);
+  fx->points.resize(points * rank);
   for (std::size_t i = 0; i < fx->points.size(); ++i) {
     const auto& a = axes[i % rank];
     fx->points[i] = lookup::invert_transform(a.transform, a.u0 + uni(rng) * a.du * (a.n - 1), a.scale);
   }
-  for (std::size_t i = 0; i < kPoints; ++i) {
+  for (std::size_t i = 0; i < points; ++i) {
     const double* x = fx->points.data() + i * rank;
     fx->max_abs_error = std::max(fx->max_abs_error, std::abs(fx->table.eval({x, static_cast<std::size_t>(rank)}) - f(x, rank)));
   }
@@ -92,9 +98,10 @@ std::shared_ptr<Fixture> make_fixture(int rank, lookup::Interpolation interp, lo
 }
 
 void finish(benchmark::State& state, const Fixture& fx) {
-  per_call(state, kPoints);
+  per_call(state, fx.points.size() / static_cast<std::size_t>(fx.table.rank()));
   state.counters["max_abs_err"] = fx.max_abs_error;
   state.counters["table_bytes"] = static_cast<double>(fx.table.bytes());
+  state.counters["memory_bytes"] = static_cast<double>(fx.table.memory_bytes());
 }
 
 // Floors of a batched 2-D bilinear query, for comparison with lookup/batch/2d/linear:
@@ -171,6 +178,32 @@ void register_floor_benchmarks() {
   }
 }
 
+// 2-D bilinear batches on tables of n x n values (float32 unwidened: the float32 kernels;
+// float64: the kernels a widened float32 table runs) at 65,536 random points per iteration,
+// so that tables beyond the caches are read from memory: where widening float32 tables stops
+// paying (kWidenFloat32MaxValues). Fixtures are built on first use.
+void register_size_benchmarks() {
+  for (int n : {64, 256, 512, 1024, 2048})
+    for (bool f32 : {true, false}) {
+      const std::string name = "lookup/size/2d/linear/" + std::string(f32 ? "float32-unwidened" : "float64") + "/" +
+                               std::to_string(n) + "x" + std::to_string(n);
+      benchmark::RegisterBenchmark(name.c_str(), [n, f32](benchmark::State& state) {
+        static std::map<std::pair<int, bool>, std::shared_ptr<Fixture>> cache;
+        auto& fx = cache[{n, f32}];
+        if (!fx)
+          fx = make_fixture(2, lookup::Interpolation::linear, f32 ? lookup::Storage::float32 : lookup::Storage::float64,
+                            Axes::identity, false, n, 65536);
+        std::vector<double> out(fx->points.size() / 2);
+        for (auto _ : state) {
+          fx->table.eval_batch(fx->points, out);
+          benchmark::DoNotOptimize(out.data());
+          benchmark::ClobberMemory();
+        }
+        finish(state, *fx);
+      });
+    }
+}
+
 }  // namespace
 
 void register_lookup_benchmarks(const BenchContext&) {
@@ -178,11 +211,15 @@ void register_lookup_benchmarks(const BenchContext&) {
   for (int rank = 1; rank <= 3; ++rank) {
     if (kind == Axes::sqrt && rank != 2) continue;  // the H-function shape
     for (auto interp : {lookup::Interpolation::linear, lookup::Interpolation::cubic}) {
-      for (auto storage : {lookup::Storage::float32, lookup::Storage::float64}) {
+      // float32-unwidened: the same float32 table run by the float32 kernels (rank 2 only).
+      for (int sv : {0, 1, 2}) {
+        const auto storage = sv == 2 ? lookup::Storage::float64 : lookup::Storage::float32;
+        const bool widen = sv != 1;
+        if (!widen && rank != 2) continue;
         const std::string tag = std::to_string(rank) + "d/" + std::string(lookup::interpolation_name(interp)) + "/" +
-                                std::string(lookup::storage_name(storage)) +
+                                std::string(lookup::storage_name(storage)) + (widen ? "" : "-unwidened") +
                                 (kind == Axes::log ? "/log" : kind == Axes::sqrt ? "/sqrt" : "");
-        auto fx = make_fixture(rank, interp, storage, kind);
+        auto fx = make_fixture(rank, interp, storage, kind, widen);
         benchmark::RegisterBenchmark(("lookup/scalar/" + tag).c_str(), [fx, rank](benchmark::State& state) {
           const std::size_t r = static_cast<std::size_t>(rank);
           for (auto _ : state)
@@ -216,6 +253,7 @@ void register_lookup_benchmarks(const BenchContext&) {
     }
   }
   register_floor_benchmarks();
+  register_size_benchmarks();
 }
 
 }  // namespace brdftab::validate

@@ -1,5 +1,6 @@
 #include "lookup/number_format.hpp"
 #include "lookup/table.hpp"
+#include "lookup/detail/float32_widening.hpp"
 #include "lookup/detail/table_simd.hpp"
 #include "lookup/detail/with_transform.hpp"
 
@@ -93,6 +94,11 @@ bool avx2_enabled() { return cpu_has_avx2() && g_avx2_switched_on.load(std::memo
 bool avx2_enabled() { return false; }
 #endif
 void set_avx2_enabled(bool on) { g_avx2_switched_on.store(on, std::memory_order_relaxed); }
+namespace {
+std::atomic<bool> g_float32_widening{true};
+}
+void set_float32_widening(bool on) { g_float32_widening.store(on, std::memory_order_relaxed); }
+bool float32_widening() { return g_float32_widening.load(std::memory_order_relaxed); }
 }  // namespace detail
 
 template <int D, int K, class T>
@@ -304,12 +310,22 @@ Table::Table(std::string name, std::vector<Axis> axes, std::span<const double> v
     if (!std::isfinite(values[i]))
       throw std::invalid_argument(where + ": value #" + std::to_string(i) + " is not finite (" + fmt(values[i]) + ")");
   if (storage_ == Storage::float32) {
-    f32_.resize(size_);
-    for (std::size_t i = 0; i < size_; ++i) {
-      f32_[i] = static_cast<float>(values[i]);
-      if (!std::isfinite(f32_[i]))
+    widened_ = size_ <= kWidenFloat32MaxValues && detail::float32_widening();
+    auto check = [&](std::size_t i, float v) {
+      if (!std::isfinite(v))
         throw std::invalid_argument(where + ": value #" + std::to_string(i) + " (" + fmt(values[i]) +
                                     ") overflows float32");
+    };
+    if (widened_) {  // rounded to float32, then widened (exact): the values the float32 kernels read
+      f64_.resize(size_);
+      for (std::size_t i = 0; i < size_; ++i) {
+        const float v = static_cast<float>(values[i]);
+        check(i, v);
+        f64_[i] = static_cast<double>(v);
+      }
+    } else {
+      f32_.resize(size_);
+      for (std::size_t i = 0; i < size_; ++i) check(i, f32_[i] = static_cast<float>(values[i]));
     }
   } else {
     f64_.assign(values.begin(), values.end());
@@ -323,7 +339,7 @@ Table::Table(std::string name, std::vector<Axis> axes, std::span<const double> v
   const bool cubic = interpolation_ == Interpolation::cubic;
   Transform tr[kMaxRank];
   for (int d = 0; d < rank_; ++d) tr[d] = axes_[d].transform;
-  if (storage_ == Storage::float32)
+  if (storage_ == Storage::float32 && !widened_)
     cubic ? pick_rank<4, float>(rank_, tr, identity, kernel_, batch_kernel_)
           : pick_rank<2, float>(rank_, tr, identity, kernel_, batch_kernel_);
   else
@@ -342,7 +358,7 @@ double Table::at_index(std::span<const int> index) const {
                               axes_[d].name + "' (0.." + std::to_string(axes_[d].n - 1) + ")");
     offset += index[d] * strides_[d];
   }
-  return storage_ == Storage::float32 ? f32_[offset] : f64_[offset];
+  return f64_.empty() ? static_cast<double>(f32_[offset]) : f64_[offset];
 }
 
 void Table::check_point(const double* x, OutOfDomain policy) const {

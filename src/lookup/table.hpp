@@ -40,6 +40,13 @@ class DomainError : public std::domain_error {
 inline constexpr int kMaxRank = 4;
 // Largest table accepted (values), far above any real table; guards size arithmetic.
 inline constexpr std::size_t kMaxTableSize = std::size_t(1) << 31;
+// Float32 tables of at most this many values are held in memory as their float64 widening
+// (static_cast<double>, exact) and queried by the float64 kernels: every float32 kernel
+// widens each value before it multiplies (interp::accumulate, the AVX2 loads), so the
+// results are bit-identical, and the batched kernels skip the widenings (2-D bilinear
+// batched: README "## Speed"). Costs 4 more bytes per value in memory (memory_bytes());
+// the file keeps float32 and storage() and bytes() still say float32.
+inline constexpr std::size_t kWidenFloat32MaxValues = std::size_t(1) << 18;
 
 class Table {
  public:
@@ -56,7 +63,9 @@ class Table {
   Storage storage() const { return storage_; }
   Interpolation interpolation() const { return interpolation_; }
   std::size_t size() const { return size_; }
-  std::size_t bytes() const { return size_ * (storage_ == Storage::float32 ? 4 : 8); }
+  std::size_t bytes() const { return size_ * (storage_ == Storage::float32 ? 4 : 8); }  // as stored
+  bool widened() const { return widened_; }  // float32 values held as float64 (kWidenFloat32MaxValues)
+  std::size_t memory_bytes() const { return size_ * (widened_ || storage_ == Storage::float64 ? 8 : 4); }
   double at_index(std::span<const int> index) const;  // the stored grid value
 
   // Scalar query: x holds one coordinate per axis (x.size() == rank()). The common case
@@ -94,8 +103,9 @@ class Table {
   std::size_t size_ = 0;
   Storage storage_ = Storage::float64;
   Interpolation interpolation_ = Interpolation::linear;
-  std::vector<float> f32_;
-  std::vector<double> f64_;
+  bool widened_ = false;
+  std::vector<float> f32_;   // float32 tables above kWidenFloat32MaxValues
+  std::vector<double> f64_;  // float64 tables, and float32 tables widened
   std::array<interp::AxisMap, kMaxRank> maps_{};
   Kernel kernel_ = nullptr;
   BatchKernel batch_kernel_ = nullptr;
