@@ -17,7 +17,7 @@ inline constexpr const char* kSummary =
     "Beckmann NDF, height-correlated and separable G2";
 
 // Resolution as steps in ln(alpha) and the sheared s(mu; alpha) of GGX and Beckmann (ln(beta),
-// ln(p), mu^(1/4) for the generalized Beckmann); README and the report give the measured
+// p / (k + p), mu^(1/4) for the generalized Beckmann); README and the report give the measured
 // errors and generation times. The precise grid is the compact
 // one refined precise_refine times in each axis, so every compact node is a precise node and
 // its exact values are computed once (generators/microfacet_albedo.cpp, AlbedoCache).
