@@ -17,7 +17,7 @@ inline constexpr const char* kSummary =
     "Beckmann NDF, height-correlated and separable G2";
 
 // Resolution as steps in ln(alpha) and the sheared s(mu; alpha) of GGX and Beckmann (ln(beta),
-// ln(p), mu^(1/4) for the generalized Beckmann); README and the report give the measured
+// p / (k + p), mu^(1/4) for the generalized Beckmann); README and the report give the measured
 // errors and generation times. The precise grid is the compact
 // one refined precise_refine times in each axis, so every compact node is a precise node and
 // its exact values are computed once (generators/microfacet_albedo.cpp, AlbedoCache).
@@ -38,18 +38,24 @@ struct Config {
   bool compact = true, precise = true, ggx = true, beckmann = true;
   double avg_log_alpha_step = 0.016;
   // Generalized Beckmann on (p, beta, mu) (compact only), per material on (beta, mu) at the
-  // listed p (its own, finer beta and mu steps), E_avg on (p, beta).
+  // listed p (its own, finer beta and mu steps), E_avg on (p, beta). The p axis is regular
+  // in u = p / (k + p), k = g_p_scale (steps g_p_step, g_avg_p_step in u): nearly 1/p for
+  // small k, which spends the nodes at small p where E changes fastest (README). The E_avg
+  // grid (~600 E_avg, ~200 CPU-s) is generated with the precise grids (`precise`).
   bool gbeckmann = true;
   double beta_lo = 0.05, beta_hi = 1, p_lo = 0.5, p_hi = 2;
-  double g_log_beta_step = 0.215, g_log_p_step = 0.2, g_mu_step = 0.0154;
+  double g_p_scale = 0.02;
+  // 3-D: 9 x 20 x 45 (31.6 KB) on (p / (k + p), ln beta, mu^(1/4)).
+  double g_log_beta_step = 0.1577, g_p_step = 0.00358, g_mu_step = 0.02201;
   std::vector<double> material_p = {0.5, 2.0};
   double g_material_log_beta_step = 0.05, g_material_mu_step = 0.0102;
-  double g_avg_log_beta_step = 0.2, g_avg_log_p_step = 0.1;
+  // E_avg: 17 x 36 (p, ln beta), float64.
+  double g_avg_log_beta_step = 0.0856, g_avg_p_step = 0.00179;
   // Off-grid error samples (rows x per row); each costs one exact E (0.2-20 ms; the
   // generalized Beckmann 1-20 ms) or one E_avg (~100 E).
   int error_rows = 48, error_per_row = 24;
   int avg_error_points = 32;
-  int g_error_rows = 16, g_error_per_row = 8, g_avg_error_rows = 4, g_avg_error_per_row = 2;
+  int g_error_rows = 48, g_error_per_row = 16, g_avg_error_rows = 8, g_avg_error_per_row = 16;
   // Non-empty: one 1-D table per material and quantity on mu at its roughness (scenes;
   // microfacet_albedo_scene.cpp), material_mu_points points on mu^(1/4), float64 cubic.
   std::vector<Material> materials;

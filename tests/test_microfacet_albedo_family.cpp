@@ -142,6 +142,13 @@ TEST_CASE("microfacet_albedo tables: generalized Beckmann tables hold their stat
   REQUIRE(stated > 0);
   const numerics::MicrofacetAlbedo e = numerics::microfacet_albedo({numerics::NdfKind::gbeckmann, 0.3, 0.8}, 0.6);
   CHECK(std::abs(lookup::microfacet_albedo(t, 0.6, 0.3, 0.8).e_corr - e.e_corr) <= 1.5 * stated);
+  // E_avg(p, beta) (generated with the precise grids; present in the committed file).
+  REQUIRE(t.avg[0] != nullptr);
+  const double stated_avg =
+      ts.get(std::string(sc::kFile), std::string(sc::kGBeckmannAvg[0].name)).info.attribute_number("max_abs_error", 0);
+  REQUIRE(stated_avg > 0);
+  const numerics::MicrofacetAlbedoAvg ea = numerics::microfacet_albedo_avg({numerics::NdfKind::gbeckmann, 0.3, 0.8});
+  CHECK(std::abs(lookup::microfacet_albedo_avg(t, 0.3, 0.8).eavg_corr - ea.eavg_corr) <= 1.5 * stated_avg);
   // Per material p = 2: its own (beta, mu) tables.
   const lookup::MicrofacetAlbedoTables m = lookup::microfacet_albedo_material_tables(ts, 2.0);
   const double stated_m = ts.get(std::string(sc::kFile), sc::material_dataset(2.0, 0)).info.attribute_number("max_abs_error", 0);

@@ -17,6 +17,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "lookup/batch_chunks.hpp"
 #include "lookup/microfacet_albedo_schema.hpp"
@@ -95,8 +96,12 @@ inline MicrofacetAlbedoTables microfacet_albedo_tables(TableSet& ts, const std::
       out.e[static_cast<std::size_t>(q)] = &ts.table(file, std::string(d.name));
       schema::check_table(*out.e[static_cast<std::size_t>(q)], d);
     }
+    // E_avg(p, beta) is generated with the precise grids (generators/microfacet_albedo.hpp):
+    // a file made without them has none, and the averages stay null.
+    const std::vector<std::string> names = list_tables(ts.dir() / file, ts.options());
     for (int q = 0; q < 2; ++q) {
       const auto& d = sc::kGBeckmannAvg[static_cast<std::size_t>(q)];
+      if (std::find(names.begin(), names.end(), std::string(d.name)) == names.end()) continue;
       out.avg[static_cast<std::size_t>(q)] = &ts.table(file, std::string(d.name));
       schema::check_table(*out.avg[static_cast<std::size_t>(q)], d);
     }
