@@ -183,7 +183,7 @@ void register_floor_benchmarks() {
 // so that tables beyond the caches are read from memory: where widening float32 tables stops
 // paying (kWidenFloat32MaxValues). Fixtures are built on first use.
 void register_size_benchmarks() {
-  for (int n : {64, 256, 512, 1024, 2048})
+  for (int n : {64, 256, 362, 512, 1024, 2048})
     for (bool f32 : {true, false}) {
       const std::string name = "lookup/size/2d/linear/" + std::string(f32 ? "float32-unwidened" : "float64") + "/" +
                                std::to_string(n) + "x" + std::to_string(n);

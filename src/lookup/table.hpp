@@ -45,8 +45,11 @@ inline constexpr std::size_t kMaxTableSize = std::size_t(1) << 31;
 // widens each value before it multiplies (interp::accumulate, the AVX2 loads), so the
 // results are bit-identical, and the batched kernels skip the widenings (2-D bilinear
 // batched: README "## Speed"). Costs 4 more bytes per value in memory (memory_bytes());
-// the file keeps float32 and storage() and bytes() still say float32.
-inline constexpr std::size_t kWidenFloat32MaxValues = std::size_t(1) << 18;
+// the file keeps float32 and storage() and bytes() still say float32. The limit keeps the
+// widened copy within 1 MB (a typical L2 cache): on 2-D bilinear batches at random points
+// (`brdftab bench`, lookup/size/) the float64 kernels are 15-28% faster at 256 x 256, even at
+// 362 x 362 (-4..+9%), 7-16% slower at 512 x 512 (2 MB widened): memory bounds them there.
+inline constexpr std::size_t kWidenFloat32MaxValues = std::size_t(1) << 17;
 
 class Table {
  public:
