@@ -142,6 +142,19 @@ double thread_cpu_seconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
+Point pointwise_point(const std::string& method, const std::string& variant, double err, const std::string& error_source,
+                      std::size_t n, const std::function<double(std::size_t)>& f, double min_seconds) {
+  volatile double sink = 0;
+  Point p{method, variant, "", "", 0, 0, err, error_source};
+  p.ns_per_value = ns_per_value(n, [&] {
+    double s = 0;
+    for (std::size_t i = 0; i < n; ++i) s += f(i);
+    sink = s;
+  }, min_seconds);
+  (void)sink;
+  return p;
+}
+
 double ns_per_value(std::size_t n, const std::function<void()>& run, double min_seconds) {
   min_seconds *= g_time_scale;
   // The clock read (a system call, ~0.3-1 us) is amortized: run() is called in batches that

@@ -54,17 +54,9 @@ struct Method {
 // Rows for methods evaluated point by point: error against ref (relative or absolute), time.
 void add_rows(Quantity& q, const std::vector<double>& ref, bool relative, const std::string& src,
               const std::vector<Method>& methods) {
-  volatile double sink = 0;
-  for (const Method& m : methods) {
-    Point p{m.method, m.variant, "", "", 0, 0, relative ? max_rel_error(ref, m.f) : max_abs_error(ref, m.f), src};
-    p.ns_per_value = ns_per_value(ref.size(), [&] {
-      double s = 0;
-      for (std::size_t i = 0; i < ref.size(); ++i) s += m.f(i);
-      sink = s;
-    });
-    q.rows.push_back(p);
-  }
-  (void)sink;
+  for (const Method& m : methods)
+    q.rows.push_back(pointwise_point(m.method, m.variant, relative ? max_rel_error(ref, m.f) : max_abs_error(ref, m.f), src,
+                                     ref.size(), m.f));
 }
 
 Point reference_row(const std::string& variant, std::size_t n, const std::function<double(std::size_t)>& f) {
