@@ -142,7 +142,8 @@ double thread_cpu_seconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-Point pointwise_point(const std::string& method, const std::string& variant, double err, const std::string& error_source,
+Point pointwise_point(const std::string& method, const std::string& variant, std::optional<double> err,
+                      const std::string& error_source,
                       std::size_t n, const std::function<double(std::size_t)>& f, double min_seconds) {
   volatile double sink = 0;
   Point p{method, variant, "", "", 0, 0, err, error_source};

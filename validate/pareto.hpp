@@ -71,8 +71,9 @@ double max_abs_error(const std::vector<double>& exact, const std::function<doubl
 double max_rel_error(const std::vector<double>& exact, const std::function<double(std::size_t)>& approx);
 
 // A row for a method evaluated point by point, f(i) for i < n: its error (already measured,
-// against error_source) and the time of summing f over the n points.
-Point pointwise_point(const std::string& method, const std::string& variant, double err, const std::string& error_source,
+// against error_source; none for the reference row) and the time of summing f over the n points.
+Point pointwise_point(const std::string& method, const std::string& variant, std::optional<double> err,
+                      const std::string& error_source,
                       std::size_t n, const std::function<double(std::size_t)>& f, double min_seconds = 0.02);
 
 // A table row (method "table") for the table t: error from `err`, time of `eval_all` (which

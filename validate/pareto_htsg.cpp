@@ -60,15 +60,7 @@ void add_rows(Quantity& q, const std::vector<double>& ref, bool relative, const 
 }
 
 Point reference_row(const std::string& variant, std::size_t n, const std::function<double(std::size_t)>& f) {
-  volatile double sink = 0;
-  Point p{"exact", variant, "", "", 0, 0, std::nullopt, "reference"};
-  p.ns_per_value = ns_per_value(n, [&] {
-    double s = 0;
-    for (std::size_t i = 0; i < n; ++i) s += f(i);
-    sink = s;
-  }, 0.005);
-  (void)sink;
-  return p;
+  return pointwise_point("exact", variant, std::nullopt, "reference", n, f, 0.005);
 }
 
 Quantity measure_distribution(const Options& o) {
