@@ -98,7 +98,8 @@ Config read_config(const nlohmann::json& entry) {
   c.g_log_beta_step = r.number("g_log_beta_step", c.g_log_beta_step, 1e-3, 10.0);
   c.g_p_scale = r.number("g_p_scale", c.g_p_scale, 1e-4, 100.0);
   c.g_p_step = r.number("g_p_step", c.g_p_step, 1e-5, 1.0);
-  c.g_mu_step = r.number("g_mu_step", c.g_mu_step, 1e-3, 20.0);
+  c.g_v_step = r.number("g_v_step", c.g_v_step, 1e-4, 1.0);
+  c.g_v_root_weight = r.number("g_v_root_weight", c.g_v_root_weight, 0.0, 1.0);
   if (const nlohmann::json* list = r.raw("material_p")) {
     if (!list->is_array()) throw ManifestError(r.key_path("material_p") + ": expected a list of numbers p");
     c.material_p.clear();
@@ -113,7 +114,7 @@ Config read_config(const nlohmann::json& entry) {
     }
   }
   c.g_material_log_beta_step = r.number("g_material_log_beta_step", c.g_material_log_beta_step, 1e-3, 10.0);
-  c.g_material_mu_step = r.number("g_material_mu_step", c.g_material_mu_step, 1e-3, 20.0);
+  c.g_material_v_step = r.number("g_material_v_step", c.g_material_v_step, 1e-4, 1.0);
   c.g_avg_log_beta_step = r.number("g_avg_log_beta_step", c.g_avg_log_beta_step, 1e-3, 10.0);
   c.g_avg_p_step = r.number("g_avg_p_step", c.g_avg_p_step, 1e-5, 1.0);
   c.error_rows = static_cast<int>(r.integer("error_rows", c.error_rows, 1, 100000));
@@ -149,10 +150,11 @@ nlohmann::json to_json_grids(const Config& c) {
           {"g_log_beta_step", c.g_log_beta_step},
           {"g_p_scale", c.g_p_scale},
           {"g_p_step", c.g_p_step},
-          {"g_mu_step", c.g_mu_step},
+          {"g_v_step", c.g_v_step},
+          {"g_v_root_weight", c.g_v_root_weight},
           {"material_p", c.material_p},
           {"g_material_log_beta_step", c.g_material_log_beta_step},
-          {"g_material_mu_step", c.g_material_mu_step},
+          {"g_material_v_step", c.g_material_v_step},
           {"g_avg_log_beta_step", c.g_avg_log_beta_step},
           {"g_avg_p_step", c.g_avg_p_step},
           {"error_rows", c.error_rows},
@@ -271,25 +273,29 @@ double component(const MicrofacetAlbedo& e, int q) {
 
 int log_points(double lo, double hi, double step) { return points_for_step(std::log(hi / lo), step); }
 
-// mu of a node s of the sheared coordinate s(mu; alpha) (schema::microfacet_albedo::s_of_mu,
-// increasing in mu) by bisection on [mu_lo, mu_hi] to the last bit.
-double mu_of_s(const sc::MuShear& m, double s, double alpha) {
-  if (!(s > 0)) return m.mu_lo;
-  if (!(s < 1)) return m.mu_hi;
-  double lo = m.mu_lo, hi = m.mu_hi;
+// y in [y_lo, y_hi] where the increasing coordinate c(y) (s_of_mu or v_of_mu) takes the node
+// value x, by bisection to the last bit; c(y_lo) = 0, c(y_hi) = 1.
+template <class Coordinate>
+double invert_coordinate(const Coordinate& c, double x, double x_lo, double x_hi) {
+  if (!(x > 0)) return x_lo;
+  if (!(x < 1)) return x_hi;
+  double lo = x_lo, hi = x_hi;
   for (int k = 0; k < 1100; ++k) {
     const double mid = 0.5 * (lo + hi);
     if (!(mid > lo && mid < hi)) break;
-    (sc::s_of_mu(m, mid, alpha) < s ? lo : hi) = mid;
+    (c(mid) < x ? lo : hi) = mid;
   }
-  return std::abs(sc::s_of_mu(m, lo, alpha) - s) <= std::abs(sc::s_of_mu(m, hi, alpha) - s) ? lo : hi;
+  return std::abs(c(lo) - x) <= std::abs(c(hi) - x) ? lo : hi;
+}
+double mu_of_s(const sc::MuShear& m, double s, double alpha) {
+  return invert_coordinate([&](double mu) { return sc::s_of_mu(m, mu, alpha); }, s, m.mu_lo, m.mu_hi);
+}
+double mu_of_v(const sc::MuBlend& m, double v) {
+  return invert_coordinate([&](double mu) { return sc::v_of_mu(m, mu); }, v, m.mu_lo, m.mu_hi);
 }
 // Points of the p axis (u = p / (k + p), k = g_p_scale) for a step in u.
 int p_points(const Config& c, double step) {
   return points_for_step(transformed_span(sc::kP.transform, c.p_lo, c.p_hi, c.g_p_scale), step);
-}
-int mu_points(double lo, double hi, double step) {
-  return points_for_step(transformed_span(sc::kMu.transform, lo, hi), step);
 }
 
 // Declared single-core cost per exact E (dry runs, scene cost model: reproducible
@@ -322,6 +328,34 @@ std::vector<std::vector<double>> targeted_grazing(double r_lo, double r_hi, doub
     }
   }
   return pts;
+}
+
+// Targeted near normal incidence (generalized Beckmann): mu = {0.93, 0.97, 0.99, 0.997,
+// 0.9995} at every midpoint of the beta cells (where cubic interpolation errs most), where E
+// bends in theta and falls steeply in beta (beta 0.5-1 at p = 2: the worst points of the
+// 3-D table; measured 1.3e-3 at mu = 0.9992 where 768 random points and 45 fixed betas
+// found 6.6e-4).
+constexpr const char* kTargetedNormalText = "beta at every beta-cell midpoint, mu = {0.93, 0.97, 0.99, 0.997, 0.9995}";
+std::vector<std::vector<double>> targeted_normal(const std::vector<double>& betas, double mu_lo, double mu_hi,
+                                                 const std::vector<double>& outer) {
+  std::vector<std::vector<double>> pts;
+  for (double r : betas) {
+    for (double mu : {0.93, 0.97, 0.99, 0.997, 0.9995}) {
+      if (!(mu >= mu_lo && mu <= mu_hi)) continue;
+      std::vector<double> pt = outer;
+      pt.push_back(r);
+      pt.push_back(mu);
+      pts.push_back(std::move(pt));
+    }
+  }
+  return pts;
+}
+// The midpoints (in the transformed coordinate) of the n - 1 cells of an axis on [lo, hi].
+std::vector<double> cell_midpoints(const schema::AxisSchema& a, double lo, double hi, int n, double scale = 1.0) {
+  const double u_lo = lookup::apply_transform(a.transform, lo, scale), u_hi = lookup::apply_transform(a.transform, hi, scale);
+  std::vector<double> out;
+  for (int i = 0; i + 1 < n; ++i) out.push_back(lookup::invert_transform(a.transform, u_lo + (i + 0.5) * (u_hi - u_lo) / (n - 1), scale));
+  return out;
 }
 
 BuiltTable finish(TableSpec spec, const RowFunction& row, const GenerateContext& ctx, double value_seconds,
@@ -412,51 +446,87 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
   AlbedoCache cache(NdfKind::gbeckmann);
   const int np = p_points(c, c.g_p_step);
   const int nb = log_points(c.beta_lo, c.beta_hi, c.g_log_beta_step);
-  const int nm = mu_points(c.mu_lo, c.mu_hi, c.g_mu_step);
-  const std::string bm = "beta in " + range_text(c.beta_lo, c.beta_hi) + ", mu in " + range_text(c.mu_lo, c.mu_hi);
+  const int nm = points_for_step(1.0, c.g_v_step);
+  sc::MuBlend blend;
+  blend.root_weight = c.g_v_root_weight, blend.mu_lo = c.mu_lo, blend.mu_hi = c.mu_hi;
+  const std::string bm = "beta in " + range_text(c.beta_lo, c.beta_hi) + ", mu in " + range_text(c.mu_lo, c.mu_hi) +
+                         " (v in [0, 1])";
+  // Targeted error points (grazing, and near normal incidence at the midpoints of the n_beta
+  // - 1 beta cells for each of the outer coordinates in normal_outer) with mu as v(mu).
+  const auto targeted_v = [&](int n_beta, const std::vector<double>& outer, const std::vector<std::vector<double>>& normal_outer) {
+    std::vector<std::vector<double>> pts = targeted_grazing(c.beta_lo, c.beta_hi, c.mu_lo, c.mu_hi, outer);
+    const std::vector<double> betas = cell_midpoints(sc::kBeta, c.beta_lo, c.beta_hi, n_beta);
+    for (const auto& o : normal_outer)
+      for (auto& pt : targeted_normal(betas, c.mu_lo, c.mu_hi, o)) pts.push_back(std::move(pt));
+    for (std::vector<double>& pt : pts) pt.back() = sc::v_of_mu(blend, pt.back());
+    return pts;
+  };
+  const std::string targeted_text = std::string(kTargetedText) + "; " + kTargetedNormalText;
+  // A row of exact values at the v nodes of one (beta, p).
+  const auto v_row = [&cache, &blend](double beta, double p, std::span<const double> vs, std::span<double> out, int q) {
+    std::vector<double> mus(vs.size());
+    for (std::size_t j = 0; j < vs.size(); ++j) mus[j] = mu_of_v(blend, vs[j]);
+    const std::vector<MicrofacetAlbedo> e = cache.row(beta, p, mus);
+    for (std::size_t j = 0; j < vs.size(); ++j) out[j] = component(e[j], q);
+  };
+  const auto set_blend_attributes = [&](BuiltTable& t, std::string_view inputs, const std::string& lookup) {
+    t.dataset.attributes["mu_v_root_weight"] = blend.root_weight;
+    t.dataset.attributes["mu_lo"] = blend.mu_lo;
+    t.dataset.attributes["mu_hi"] = blend.mu_hi;
+    t.dataset.attributes["inputs"] = std::string(inputs);
+    t.dataset.attributes["derived_axes"] = std::string(sc::kDerivedAxesV);
+    t.dataset.attributes["lookup"] = lookup;
+  };
   for (int q = 0; q < 4; ++q) {
     const schema::DatasetSchema& ds = sc::kGBeckmann3d[static_cast<std::size_t>(q)];
     TableSpec spec;
     spec.dataset = std::string(ds.name);
     spec.quantity = std::string(ds.quantity);
     spec.axes = {axis_spec(sc::kP, c.p_lo, c.p_hi, np, c.g_p_scale), axis_spec(sc::kBeta, c.beta_lo, c.beta_hi, nb),
-                 axis_spec(sc::kMu, c.mu_lo, c.mu_hi, nm)};
+                 axis_spec(sc::kV, 0.0, 1.0, nm)};
     spec.storage = lookup::Storage::float32;
     spec.domain = "p in " + range_text(c.p_lo, c.p_hi) + ", " + bm;
     spec.method = kMethodE;
     spec.error_rows = c.g_error_rows;
     spec.error_per_row = c.g_error_per_row;
-    spec.targeted_points = targeted_grazing(c.beta_lo, c.beta_hi, c.mu_lo, c.mu_hi, {std::sqrt(c.p_lo * c.p_hi)});
-    spec.targeted_text = kTargetedText;
-    const RowFunction row = [&cache, q](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
-      const std::vector<MicrofacetAlbedo> e = cache.row(outer[1], outer[0], mus);
-      for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
+    // near normal: p next to both ends (E falls most steeply in beta at p_hi) and at the
+    // midpoints of the middle and last p cells
+    const std::vector<double> pm = cell_midpoints(sc::kP, c.p_lo, c.p_hi, np, c.g_p_scale);
+    spec.targeted_points = targeted_v(nb, {std::sqrt(c.p_lo * c.p_hi)},
+                                      {{c.p_lo * 1.01}, {pm[pm.size() / 2]}, {pm.back()}, {c.p_hi / 1.01}});
+    spec.targeted_text = targeted_text + " (grazing at p = sqrt(p_lo p_hi); near normal at p = 1.01 p_lo, p_hi / 1.01 "
+                                         "and the midpoints of the middle and last p cells); as (p, beta, v(mu))";
+    const RowFunction row = [&v_row, q](std::span<const double> outer, std::span<const double> vs, std::span<double> out) {
+      v_row(outer[1], outer[0], vs, out, q);
     };
-    tables.push_back(finish(std::move(spec), row, ctx, q == 0 ? kGValueSeconds : 0.0));
+    BuiltTable t = finish(std::move(spec), row, ctx, q == 0 ? kGValueSeconds : 0.0);
+    set_blend_attributes(t, sc::kInputsV3, "value = table(p, beta, v(mu)); see lookup::microfacet_albedo");
+    tables.push_back(std::move(t));
   }
   // Per material: (beta, mu) at a fixed p on its own finer grid (2-D: far more nodes per
   // axis in the same size; cache hits where p is a p node and the nodes coincide).
   const int nb_m = log_points(c.beta_lo, c.beta_hi, c.g_material_log_beta_step);
-  const int nm_m = mu_points(c.mu_lo, c.mu_hi, c.g_material_mu_step);
+  const int nm_m = points_for_step(1.0, c.g_material_v_step);
   for (double p : c.material_p) {
     for (int q = 0; q < 4; ++q) {
       TableSpec spec;
       spec.dataset = sc::material_dataset(p, q);
       spec.quantity = std::string(sc::kGBeckmannMaterial.quantity) + std::string(sc::kQuantities[static_cast<std::size_t>(q)]) +
                       " at p = " + lookup::format_number(p);
-      spec.axes = {axis_spec(sc::kBeta, c.beta_lo, c.beta_hi, nb_m), axis_spec(sc::kMu, c.mu_lo, c.mu_hi, nm_m)};
+      spec.axes = {axis_spec(sc::kBeta, c.beta_lo, c.beta_hi, nb_m), axis_spec(sc::kV, 0.0, 1.0, nm_m)};
       spec.storage = lookup::Storage::float32;
       spec.domain = bm + " (p = " + lookup::format_number(p) + ")";
       spec.method = kMethodE;
       spec.error_rows = c.g_error_rows;
       spec.error_per_row = c.g_error_per_row;
-      spec.targeted_points = targeted_grazing(c.beta_lo, c.beta_hi, c.mu_lo, c.mu_hi, {});
-      spec.targeted_text = kTargetedText;
-      const RowFunction row = [&cache, q, p](std::span<const double> outer, std::span<const double> mus, std::span<double> out) {
-        const std::vector<MicrofacetAlbedo> e = cache.row(outer[0], p, mus);
-        for (std::size_t j = 0; j < mus.size(); ++j) out[j] = component(e[j], q);
+      spec.targeted_points = targeted_v(nb_m, {}, {{}});
+      spec.targeted_text = targeted_text + "; as (beta, v(mu))";
+      const RowFunction row = [&v_row, q, p](std::span<const double> outer, std::span<const double> vs, std::span<double> out) {
+        v_row(outer[0], p, vs, out, q);
       };
-      tables.push_back(finish(std::move(spec), row, ctx, q == 0 ? kGValueSeconds : 0.0));
+      BuiltTable t = finish(std::move(spec), row, ctx, q == 0 ? kGValueSeconds : 0.0);
+      set_blend_attributes(t, sc::kInputsV2, "value = table(beta, v(mu)); see lookup::microfacet_albedo");
+      tables.push_back(std::move(t));
     }
   }
   // E_avg(p, beta): ~600 E_avg (~200 CPU-s), counted with the precise grids (the CI

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "generators/family.hpp"
+#include "lookup/microfacet_albedo_schema.hpp"
 
 namespace brdftab::gen::microfacet_albedo {
 
@@ -37,18 +38,23 @@ struct Config {
   int precise_refine = 4;
   bool compact = true, precise = true, ggx = true, beckmann = true;
   double avg_log_alpha_step = 0.016;
-  // Generalized Beckmann on (p, beta, mu) (compact only), per material on (beta, mu) at the
-  // listed p (its own, finer beta and mu steps), E_avg on (p, beta). The p axis is regular
+  // Generalized Beckmann on (p, beta, v(mu)) (compact only), per material on (beta, v(mu))
+  // at the listed p (its own, finer beta and v steps), E_avg on (p, beta). v is the blended
+  // mu coordinate (lookup/microfacet_albedo_schema.hpp), regular on [0, 1] (steps g_v_step,
+  // g_material_v_step). The p axis is regular
   // in u = p / (k + p), k = g_p_scale (steps g_p_step, g_avg_p_step in u): nearly 1/p for
   // small k, which spends the nodes at small p where E changes fastest (README). The E_avg
   // grid (~600 E_avg, ~200 CPU-s) is generated with the precise grids (`precise`).
   bool gbeckmann = true;
   double beta_lo = 0.05, beta_hi = 1, p_lo = 0.5, p_hi = 2;
   double g_p_scale = 0.02;
-  // 3-D: 9 x 20 x 45 (31.6 KB) on (p / (k + p), ln beta, mu^(1/4)).
-  double g_log_beta_step = 0.1577, g_p_step = 0.00358, g_mu_step = 0.02201;
+  // w of v(mu) (1: mu^(1/4) alone).
+  double g_v_root_weight = schema::microfacet_albedo::kMuBlendRootWeight;
+  // 3-D: 9 x 30 x 30 (31.6 KB) on (p / (k + p), ln beta, v).
+  double g_log_beta_step = 0.1034, g_p_step = 0.00358, g_v_step = 0.0345;
   std::vector<double> material_p = {0.5, 2.0};
-  double g_material_log_beta_step = 0.05, g_material_mu_step = 0.0102;
+  // Per p: 72 x 111 (31.2 KiB) on (ln beta, v).
+  double g_material_log_beta_step = 0.0422, g_material_v_step = 1.0 / 110;
   // E_avg: 17 x 36 (p, ln beta), float64.
   double g_avg_log_beta_step = 0.0856, g_avg_p_step = 0.00179;
   // Off-grid error samples (rows x per row); each costs one exact E (0.2-20 ms; the

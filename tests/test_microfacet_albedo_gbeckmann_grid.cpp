@@ -30,7 +30,7 @@ TEST_CASE("microfacet_albedo gbeckmann grid: p on p/(k+p), no E_avg without the 
   const nlohmann::json entry{{"ggx", false},           {"beckmann", false},       {"precise", false},
                              {"p_range", {1.0, 1.5}},  {"beta_range", {0.3, 0.6}}, {"mu_range", {0.2, 1.0}},
                              {"g_p_scale", 0.5},       {"g_p_step", 0.025},        {"g_log_beta_step", 0.3},
-                             {"g_mu_step", 0.05},      {"material_p", nlohmann::json::array()},
+                             {"g_v_step", 1.0 / 7},  {"material_p", nlohmann::json::array()},
                              {"g_error_rows", 4},      {"g_error_per_row", 4}};
   gen::find_family("microfacet_albedo")->generate(entry, ctx);
   lookup::TableSet ts(dir);

@@ -35,52 +35,87 @@ struct MicrofacetAlbedoAvgValues {
   double eavg_corr, eavg_sep;
 };
 
-// The four directional tables (any rank: 2 on (alpha, s) for GGX and Beckmann or (beta, mu)
-// per material, 3 on (p, beta, mu)) and, optionally, the two average tables of one NDF.
-// shear: the sheared mu coordinate s(mu; alpha) of the (alpha, s) tables (from their
-// attributes; absent for tables on mu).
+// The four directional tables (rank 2 on (alpha, s) for GGX and Beckmann, 3 on (p, beta, v)
+// and 2 on (beta, v) per p for the generalized Beckmann, 1 on mu per scene material) and,
+// optionally, the two average tables of one NDF. The last axis is mu or a coordinate derived
+// from it, whose constants come from the tables' attributes:
+//   shear: s(mu; alpha) of the (alpha, s) tables;
+//   blend: v(mu) of the generalized Beckmann tables.
+// Both absent: the last axis is mu itself.
 struct MicrofacetAlbedoTables {
   std::array<const Table*, 4> e{};
   std::array<const Table*, 2> avg{};  // null when absent
   std::optional<schema::microfacet_albedo::MuShear> shear;
+  std::optional<schema::microfacet_albedo::MuBlend> blend;
 };
 
 namespace detail {
-inline void check_last_axis_mu(const Table& t) {
-  if (t.axis(t.rank() - 1).name != schema::microfacet_albedo::kMu.name)
-    throw std::invalid_argument("table '" + t.name() + "': last axis is '" + t.axis(t.rank() - 1).name + "', expected 'mu'");
+// mu's range [mu_lo, mu_hi] from a table's attributes, checked: 0 < mu_lo < mu_hi <= 1.
+inline void read_mu_range(const LoadedTable& t, double& mu_lo, double& mu_hi, const char* more) {
+  mu_lo = t.info.attribute_number("mu_lo", NAN);
+  mu_hi = t.info.attribute_number("mu_hi", NAN);
+  if (!(mu_lo > 0 && mu_lo < mu_hi && mu_hi <= 1))
+    throw std::invalid_argument("table '" + t.table.name() + "': attributes " + more +
+                                "mu_lo, mu_hi missing or outside 0 < mu_lo < mu_hi <= 1");
 }
 // The constants of s(mu; alpha) from an (alpha, s) table's attributes (schema comment in
 // lookup/microfacet_albedo_schema.hpp), checked: 0 <= w <= 1, c > 0, 0 < mu_lo < mu_hi <= 1.
 inline schema::microfacet_albedo::MuShear read_mu_shear(const LoadedTable& t) {
   schema::microfacet_albedo::MuShear m;
+  read_mu_range(t, m.mu_lo, m.mu_hi, "mu_s_root_weight, mu_s_log_scale, ");
   m.root_weight = t.info.attribute_number("mu_s_root_weight", NAN);
   m.log_scale = t.info.attribute_number("mu_s_log_scale", NAN);
-  m.mu_lo = t.info.attribute_number("mu_lo", NAN);
-  m.mu_hi = t.info.attribute_number("mu_hi", NAN);
-  if (!(m.root_weight >= 0 && m.root_weight <= 1 && m.log_scale > 0 && std::isfinite(m.log_scale) && m.mu_lo > 0 &&
-        m.mu_lo < m.mu_hi && m.mu_hi <= 1))
+  if (!(m.root_weight >= 0 && m.root_weight <= 1 && m.log_scale > 0 && std::isfinite(m.log_scale)))
     throw std::invalid_argument("table '" + t.table.name() +
-                                "': attributes mu_s_root_weight, mu_s_log_scale, mu_lo, mu_hi missing or outside "
-                                "0 <= w <= 1, c > 0, 0 < mu_lo < mu_hi <= 1");
+                                "': attributes mu_s_root_weight, mu_s_log_scale missing or outside 0 <= w <= 1, c > 0");
   return m;
+}
+// The constants of v(mu) from a generalized Beckmann table's attributes, checked: 0 <= w <= 1,
+// 0 < mu_lo < mu_hi <= 1.
+inline schema::microfacet_albedo::MuBlend read_mu_blend(const LoadedTable& t) {
+  schema::microfacet_albedo::MuBlend m;
+  read_mu_range(t, m.mu_lo, m.mu_hi, "mu_v_root_weight, ");
+  m.root_weight = t.info.attribute_number("mu_v_root_weight", NAN);
+  if (!(m.root_weight >= 0 && m.root_weight <= 1))
+    throw std::invalid_argument("table '" + t.table.name() + "': attribute mu_v_root_weight missing or outside [0, 1]");
+  return m;
+}
+// mu clamped to [mu_lo, mu_hi] (policy clamp; NaN stays NaN) or checked (policy error:
+// DomainError naming mu).
+inline double mu_in_range(const Table& t, double mu, double mu_lo, double mu_hi, OutOfDomain policy) {
+  if (policy == OutOfDomain::error && !(mu >= mu_lo && mu <= mu_hi))
+    throw DomainError("table '" + t.name() + "': mu = " + format_number(mu) + " is outside the table domain [" +
+                      format_number(mu_lo) + ", " + format_number(mu_hi) + "]");
+  return std::isnan(mu) ? mu : std::clamp(mu, mu_lo, mu_hi);
 }
 // The s coordinate of (mu, alpha) for an (alpha, s) table: mu and alpha clamped to the table's
 // ranges (policy clamp) or checked (policy error: DomainError naming mu or alpha).
 inline double sheared_coordinate(const schema::microfacet_albedo::MuShear& m, const Table& t, double mu, double alpha,
                                  OutOfDomain policy) {
   const Axis& a = t.axis(0);
+  mu = mu_in_range(t, mu, m.mu_lo, m.mu_hi, policy);
   if (policy == OutOfDomain::error) {
-    if (!(mu >= m.mu_lo && mu <= m.mu_hi))
-      throw DomainError("table '" + t.name() + "': mu = " + format_number(mu) + " is outside the table domain [" +
-                        format_number(m.mu_lo) + ", " + format_number(m.mu_hi) + "]");
     if (!a.contains(alpha))
       throw DomainError("table '" + t.name() + "': alpha = " + format_number(alpha) + " is outside the table domain [" +
                         format_number(a.x_lo) + ", " + format_number(a.x_hi) + "]");
   }
-  mu = std::isnan(mu) ? mu : std::clamp(mu, m.mu_lo, m.mu_hi);
   alpha = std::isnan(alpha) ? alpha : std::clamp(alpha, a.x_lo, a.x_hi);
   return schema::microfacet_albedo::s_of_mu(m, mu, alpha);
+}
+// The v coordinate of mu for a generalized Beckmann table (the other axes, beta and p, are
+// the table's own: checked by its lookup).
+inline double blended_coordinate(const schema::microfacet_albedo::MuBlend& m, const Table& t, double mu, OutOfDomain policy) {
+  return schema::microfacet_albedo::v_of_mu(m, mu_in_range(t, mu, m.mu_lo, m.mu_hi, policy));
+}
+}  // namespace detail
+
+namespace detail {
+// Sets t.blend to m, or checks that it equals the blend already set (the four tables of a set
+// share their grid).
+inline void same_blend(MicrofacetAlbedoTables& t, const schema::microfacet_albedo::MuBlend& m, const Table& tab) {
+  if (t.blend && !(*t.blend == m))
+    throw std::invalid_argument("table '" + tab.name() + "': its v(mu) constants differ from '" + t.e[0]->name() + "'");
+  t.blend = m;
 }
 }  // namespace detail
 
@@ -93,8 +128,10 @@ inline MicrofacetAlbedoTables microfacet_albedo_tables(TableSet& ts, const std::
   if (ndf == "gbeckmann") {
     for (int q = 0; q < 4; ++q) {
       const auto& d = sc::kGBeckmann3d[static_cast<std::size_t>(q)];
-      out.e[static_cast<std::size_t>(q)] = &ts.table(file, std::string(d.name));
-      schema::check_table(*out.e[static_cast<std::size_t>(q)], d);
+      const LoadedTable& loaded = ts.get(file, std::string(d.name));
+      out.e[static_cast<std::size_t>(q)] = &loaded.table;
+      schema::check_table(loaded.table, d);
+      detail::same_blend(out, detail::read_mu_blend(loaded), loaded.table);
     }
     // E_avg(p, beta) is generated with the precise grids (generators/microfacet_albedo.hpp):
     // a file made without them has none, and the averages stay null.
@@ -135,9 +172,10 @@ inline MicrofacetAlbedoTables microfacet_albedo_material_tables(TableSet& ts, do
   namespace sc = schema::microfacet_albedo;
   MicrofacetAlbedoTables out;
   for (int q = 0; q < 4; ++q) {
-    const Table& t = ts.table(std::string(sc::kFile), sc::material_dataset(p, q));
-    schema::check_table(t, sc::kGBeckmannMaterial);
-    out.e[static_cast<std::size_t>(q)] = &t;
+    const LoadedTable& loaded = ts.get(std::string(sc::kFile), sc::material_dataset(p, q));
+    schema::check_table(loaded.table, sc::kGBeckmannMaterial);
+    out.e[static_cast<std::size_t>(q)] = &loaded.table;
+    detail::same_blend(out, detail::read_mu_blend(loaded), loaded.table);
   }
   return out;
 }
@@ -146,23 +184,39 @@ inline MicrofacetAlbedoTables microfacet_albedo_material_tables(TableSet& ts, do
 enum class MicrofacetAlbedoQuantity { e_corr = 0, e_sep = 1, split_scale = 2, split_bias = 3 };
 
 namespace detail {
-// An (alpha, s) table without its s(mu; alpha) constants would read mu as s: refused.
-[[noreturn]] inline void throw_no_shear(const Table& tab) {
-  throw std::invalid_argument("microfacet_albedo: table '" + tab.name() +
-                              "' is on (alpha, s) but the tables carry no shear constants (set "
-                              "MicrofacetAlbedoTables::shear, e.g. from microfacet_albedo_tables)");
+// A table on s or v without the constants of its coordinate would read mu as s or v: refused.
+[[noreturn]] inline void throw_no_mu_constants(const Table& tab) {
+  const std::string& axis = tab.axis(tab.rank() - 1).name;
+  throw std::invalid_argument("microfacet_albedo: table '" + tab.name() + "' is on " + axis +
+                              "(mu) but the tables carry no " + (axis == "s" ? "shear" : "blend") +
+                              " constants (set MicrofacetAlbedoTables::" + (axis == "s" ? "shear" : "blend") +
+                              ", e.g. from microfacet_albedo_tables)");
 }
-// One directional table read at (mu, alpha[, p]); s is the sheared coordinate when t.shear.
-inline double microfacet_albedo_read(const MicrofacetAlbedoTables& t, std::size_t q, double mu, double alpha, double s,
-                                     double p, OutOfDomain policy) {
+// The tables' last coordinate for mu: s(mu; alpha), v(mu), or mu itself (the caller has
+// checked that a table without constants is on mu).
+inline double mu_coordinate_unchecked(const MicrofacetAlbedoTables& t, double mu, double alpha, OutOfDomain policy) {
+  if (t.shear) return sheared_coordinate(*t.shear, *t.e[0], mu, alpha, policy);
+  if (t.blend) return blended_coordinate(*t.blend, *t.e[0], mu, policy);
+  return mu;
+}
+inline void check_mu_constants(const MicrofacetAlbedoTables& t, const Table& tab) {
+  if (!t.shear && !t.blend && tab.axis(tab.rank() - 1).name != schema::microfacet_albedo::kMu.name) [[unlikely]]
+    throw_no_mu_constants(tab);
+}
+inline double mu_coordinate(const MicrofacetAlbedoTables& t, double mu, double alpha, OutOfDomain policy) {
+  check_mu_constants(t, *t.e[0]);
+  return mu_coordinate_unchecked(t, mu, alpha, policy);
+}
+// One directional table read at the coordinate c of mu (mu_coordinate), a = alpha (beta) and p.
+inline double microfacet_albedo_read(const MicrofacetAlbedoTables& t, std::size_t q, double c, double a, double p,
+                                     OutOfDomain policy) {
   const Table& tab = *t.e[q];
   if (tab.rank() == 3) {
-    const double x[3] = {p, alpha, mu};
+    const double x[3] = {p, a, c};
     return tab.eval(x, policy);
   }
-  if (t.shear) return tab.eval2(alpha, s, policy);
-  if (tab.axis(1).name == schema::microfacet_albedo::kS.name) [[unlikely]] throw_no_shear(tab);
-  return tab.eval2(alpha, mu, policy);
+  if (tab.rank() == 1) return tab.eval1(c, policy);
+  return tab.eval2(a, c, policy);
 }
 }  // namespace detail
 
@@ -171,16 +225,16 @@ inline double microfacet_albedo_read(const MicrofacetAlbedoTables& t, std::size_
 inline MicrofacetAlbedoValues microfacet_albedo(const MicrofacetAlbedoTables& t, double mu, double alpha,
                                                 double p = 1.0, OutOfDomain policy = OutOfDomain::clamp) {
   std::array<double, 4> v{};
-  // The four (alpha, s) tables share their axes (one generator call): s once.
-  const double s = t.shear ? detail::sheared_coordinate(*t.shear, *t.e[0], mu, alpha, policy) : 0.0;
-  for (std::size_t q = 0; q < 4; ++q) v[q] = detail::microfacet_albedo_read(t, q, mu, alpha, s, p, policy);
+  // The four tables share their axes (one generator call): the mu coordinate once.
+  const double c = detail::mu_coordinate(t, mu, alpha, policy);
+  for (std::size_t q = 0; q < 4; ++q) v[q] = detail::microfacet_albedo_read(t, q, c, alpha, p, policy);
   return {v[0], v[1], v[2], v[3]};
 }
 // One of the four quantities: one table read instead of four.
 inline double microfacet_albedo(const MicrofacetAlbedoTables& t, MicrofacetAlbedoQuantity quantity, double mu,
                                 double alpha, double p = 1.0, OutOfDomain policy = OutOfDomain::clamp) {
-  const double s = t.shear ? detail::sheared_coordinate(*t.shear, *t.e[0], mu, alpha, policy) : 0.0;
-  return detail::microfacet_albedo_read(t, static_cast<std::size_t>(quantity), mu, alpha, s, p, policy);
+  const double c = detail::mu_coordinate(t, mu, alpha, policy);
+  return detail::microfacet_albedo_read(t, static_cast<std::size_t>(quantity), c, alpha, p, policy);
 }
 
 // Batched: out[i] = microfacet_albedo(t, quantity, mu[i], alpha[i], p[i], policy) bit for bit
@@ -197,19 +251,28 @@ inline void microfacet_albedo_batch(const MicrofacetAlbedoTables& t, MicrofacetA
   detail::check_batch_sizes("microfacet_albedo_batch (alpha)", alpha.size(), out.size());
   if (!p.empty()) detail::check_batch_sizes("microfacet_albedo_batch (p)", p.size(), out.size());
   const Table& tab = *t.e[static_cast<std::size_t>(quantity)];
+  detail::check_mu_constants(t, tab);
   if (tab.rank() == 3) {
     detail::batch_by_chunks<3>(tab, out.size(), out.data(), policy, [&](std::size_t start, std::size_t m, double* x) {
-      for (std::size_t j = 0; j < m; ++j)
-        x[3 * j] = p.empty() ? 1.0 : p[start + j], x[3 * j + 1] = alpha[start + j], x[3 * j + 2] = mu[start + j];
+      for (std::size_t j = 0; j < m; ++j) {
+        const double a = alpha[start + j];
+        x[3 * j] = p.empty() ? 1.0 : p[start + j], x[3 * j + 1] = a;
+        x[3 * j + 2] = detail::mu_coordinate_unchecked(t, mu[start + j], a, policy);
+      }
     });
     return;
   }
-  if (!t.shear && tab.axis(1).name == schema::microfacet_albedo::kS.name) [[unlikely]] detail::throw_no_shear(tab);
+  if (tab.rank() == 1) {
+    detail::batch_by_chunks<1>(tab, out.size(), out.data(), policy, [&](std::size_t start, std::size_t m, double* x) {
+      for (std::size_t j = 0; j < m; ++j) x[j] = detail::mu_coordinate_unchecked(t, mu[start + j], alpha[start + j], policy);
+    });
+    return;
+  }
   detail::batch_by_chunks<2>(tab, out.size(), out.data(), policy, [&](std::size_t start, std::size_t m, double* x) {
     for (std::size_t j = 0; j < m; ++j) {
-      const double a = alpha[start + j], u = mu[start + j];
+      const double a = alpha[start + j];
       x[2 * j] = a;
-      x[2 * j + 1] = t.shear ? detail::sheared_coordinate(*t.shear, *t.e[0], u, a, policy) : u;
+      x[2 * j + 1] = detail::mu_coordinate_unchecked(t, mu[start + j], a, policy);
     }
   });
 }

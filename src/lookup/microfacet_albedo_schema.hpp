@@ -7,8 +7,9 @@
 // Datasets, per quantity q of {E_corr, E_sep, split_scale, split_bias}:
 //   microfacet_albedo_<ndf>_<q>_{compact,precise}  ndf in {ggx, beckmann}: on (alpha, s), s the
 //                                                  sheared mu coordinate s(mu; alpha) below
-//   microfacet_albedo_gbeckmann_<q>_compact        generalized Beckmann: on (p, beta, mu)
-//   microfacet_albedo_gbeckmann_material_p<p>_<q>  the same at one kurtosis p: on (beta, mu)
+//   microfacet_albedo_gbeckmann_<q>_compact        generalized Beckmann: on (p, beta, v), v the
+//                                                  blended mu coordinate v(mu) below
+//   microfacet_albedo_gbeckmann_material_p<p>_<q>  the same at one kurtosis p: on (beta, v)
 //   microfacet_albedo_material_<name>_<q>          one scene material at its roughness: on mu
 // and per average qa of {Eavg_corr, Eavg_sep}:
 //   microfacet_albedo_avg_<ndf>_<qa>               on alpha;  _avg_gbeckmann_<qa> on (p, beta).
@@ -32,7 +33,22 @@
 //          near 0 at large alpha misses mu log mu); l with (mu / alpha)^(1/2) inside GGX 1.1e-5;
 //          w = 0.3: 4.4e-5 (mu ~ 2e-6 at alpha = 0.01: too few root nodes); w = 1/2: Beckmann
 //          7.1e-6, GGX 5.6e-6. The inverse mu(s) (generator only) is by bisection.
-//   mu     mu^(1/4) (generalized Beckmann and per-material tables). E(mu) is analytic for mu > 0 but not at mu = 0: Lambda_o ~ alpha / mu makes
+//   v      (generalized Beckmann 3-D and per-p tables) a derived coordinate uniform in mu^(1/4)
+//          near grazing and in theta near normal incidence:
+//            v(mu) = w r(mu) + (1 - w) t(mu),  r as for s above,
+//            t = (g(mu) - g(mu_lo)) / (g(mu_hi) - g(mu_lo)),  g(mu) = 1 - sqrt(1 - mu) = mu / (1 + sqrt(1 - mu)),
+//          w = 0.6 (attributes mu_v_root_weight, mu_lo, mu_hi; formula in kDerivedAxesV).
+//          Why: on a mu^(1/4) axis the nodes next to mu = 1 are ~4 h apart in mu, i.e. ~sqrt(8 h)
+//          in theta (0.29 rad with 96 nodes), and at beta 0.6-0.8 E bends on that scale there
+//          (measured: the per-p tables' largest errors, 5e-5 - 7e-5, all at mu > 0.97). With
+//          mu = cos(theta), g = 1 - sqrt(2) sin(theta / 2) is linear in theta at theta = 0
+//          (where 1 - mu^(1/4) ~ theta^2 / 8): its nodes are regular in theta near normal
+//          incidence, while r keeps the resolution of mu^(1/4) near grazing. Measured (4-point Lagrange along mu,
+//          96 nodes, exact E at (beta, p) = (0.7, 0.5), (0.05, 0.5), (0.2, 0.5), (0.7, 2), 250
+//          random mu; a throwaway prototype): max error w = 1 (mu^(1/4) alone) 6.1e-5, w = 0.8
+//          7.8e-6, w = 0.6 9.4e-7, w = 0.5 1.6e-6 (too few root nodes near grazing). The
+//          inverse mu(v) (generator only) is by bisection.
+//   mu     mu^(1/4) (per scene material tables on mu). E(mu) is analytic for mu > 0 but not at mu = 0: Lambda_o ~ alpha / mu makes
 //          E_corr -> 1 with a deficit ~ (mu / alpha) times logarithms (E_sep -> 0 likewise), a
 //          transition at mu ~ alpha down to 1e-3 (alpha = 0.01). A log axis resolves that best
 //          but spends half its points on mu < 1e-3 where E is nearly constant and is as coarse
@@ -66,6 +82,8 @@ inline constexpr std::string_view kFile = "microfacet_albedo.h5";
 inline constexpr AxisSchema kMu{"mu", lookup::Transform::fourth_root, "1"};
 inline constexpr AxisSchema kS{"s", lookup::Transform::identity,
                                "w r(mu) + (1 - w) l(mu; alpha) (derived_axes; lookup/microfacet_albedo_schema.hpp)"};
+inline constexpr AxisSchema kV{"v", lookup::Transform::identity,
+                               "w r(mu) + (1 - w) t(mu) (derived_axes; lookup/microfacet_albedo_schema.hpp)"};
 inline constexpr AxisSchema kAlpha{"alpha", lookup::Transform::log, "1"};
 inline constexpr AxisSchema kBeta{"beta", lookup::Transform::log, "1"};
 inline constexpr AxisSchema kP{"p", lookup::Transform::x_over_k_plus_x, "1"};
@@ -97,7 +115,7 @@ inline constexpr std::array<std::string_view, 2> kAvgQuantities{"Eavg_corr", "Ea
 #define BRDFTAB_MFA_G3(Q, TEXT)                                                                            \
   DatasetSchema {                                                                                          \
     "microfacet_albedo_gbeckmann_" Q "_compact", false,                                                    \
-        TEXT " of the generalized Beckmann microfacet BRDF (F = 1), on (p, beta, mu)", 3, { kP, kBeta, kMu } \
+        TEXT " of the generalized Beckmann microfacet BRDF (F = 1), on (p, beta, v(mu))", 3, { kP, kBeta, kV } \
   }
 
 // Index: ndf (0 ggx, 1 beckmann) * 10 + variant (0 compact, 1 precise) * 4 + quantity; the
@@ -108,8 +126,8 @@ inline constexpr std::array kGBeckmann3d{
     BRDFTAB_MFA_G3("split_scale", "split_scale(mu, beta, p)"), BRDFTAB_MFA_G3("split_bias", "split_bias(mu, beta, p)")};
 inline constexpr DatasetSchema kGBeckmannMaterial{
     "microfacet_albedo_gbeckmann_material_", true,
-    "directional albedo quantity of the generalized Beckmann microfacet BRDF (F = 1) at fixed p, on (beta, mu): ", 2,
-    {kBeta, kMu}};
+    "directional albedo quantity of the generalized Beckmann microfacet BRDF (F = 1) at fixed p, on (beta, v(mu)): ", 2,
+    {kBeta, kV}};
 inline constexpr std::array kGBeckmannAvg{
     DatasetSchema{"microfacet_albedo_avg_gbeckmann_Eavg_corr", false,
                   "Eavg_corr(beta, p) = 2 Integral E_corr(mu) mu dmu of the generalized Beckmann microfacet BRDF", 2,
@@ -162,11 +180,14 @@ struct MuShear {
   double mu_lo = 1e-6, mu_hi = 1.0;
   bool operator==(const MuShear&) const = default;
 };
+// r(mu) = (mu^(1/4) - mu_lo^(1/4)) / (mu_hi^(1/4) - mu_lo^(1/4)): the root term of s and v.
+inline double root_term(double mu, double mu_lo, double mu_hi) {
+  return (std::sqrt(std::sqrt(mu)) - std::sqrt(std::sqrt(mu_lo))) / (std::sqrt(std::sqrt(mu_hi)) - std::sqrt(std::sqrt(mu_lo)));
+}
 // s(mu; alpha) in [0, 1] for mu in [mu_lo, mu_hi]; the operations of kDerivedAxes, in order.
 inline double s_of_mu(const MuShear& m, double mu, double alpha) {
   const double d = m.log_scale * alpha + m.mu_lo;
-  const double r = (std::sqrt(std::sqrt(mu)) - std::sqrt(std::sqrt(m.mu_lo))) /
-                   (std::sqrt(std::sqrt(m.mu_hi)) - std::sqrt(std::sqrt(m.mu_lo)));
+  const double r = root_term(mu, m.mu_lo, m.mu_hi);
   const double l = std::log1p((mu - m.mu_lo) / d) / std::log1p((m.mu_hi - m.mu_lo) / d);
   return m.root_weight * r + (1 - m.root_weight) * l;
 }
@@ -177,6 +198,29 @@ inline constexpr std::string_view kDerivedAxes =
     "s = mu_s_root_weight * ((sqrt(sqrt(mu)) - sqrt(sqrt(mu_lo))) / (sqrt(sqrt(mu_hi)) - sqrt(sqrt(mu_lo)))) + "
     "(1 - mu_s_root_weight) * (log1p((mu - mu_lo) / (mu_s_log_scale * alpha + mu_lo)) / "
     "log1p((mu_hi - mu_lo) / (mu_s_log_scale * alpha + mu_lo)))";
+
+// The blended mu coordinate of the generalized Beckmann tables (see "Axis transforms" above).
+inline constexpr double kMuBlendRootWeight = 0.6;
+struct MuBlend {
+  double root_weight = kMuBlendRootWeight;  // w
+  double mu_lo = 1e-6, mu_hi = 1.0;
+  bool operator==(const MuBlend&) const = default;
+};
+// g(mu) = 1 - sqrt(1 - mu), written without the cancellation at small mu.
+inline double one_minus_sqrt_one_minus(double mu) { return mu / (1.0 + std::sqrt(1.0 - mu)); }
+// v(mu) in [0, 1] for mu in [mu_lo, mu_hi]; the operations of kDerivedAxesV, in order.
+inline double v_of_mu(const MuBlend& m, double mu) {
+  const double r = root_term(mu, m.mu_lo, m.mu_hi);
+  const double g_lo = one_minus_sqrt_one_minus(m.mu_lo);
+  const double t = (one_minus_sqrt_one_minus(mu) - g_lo) / (one_minus_sqrt_one_minus(m.mu_hi) - g_lo);
+  return m.root_weight * r + (1 - m.root_weight) * t;
+}
+inline constexpr std::string_view kInputsV3 = "p, beta, mu", kInputsV2 = "beta, mu";
+
+inline constexpr std::string_view kDerivedAxesV =
+    "v = mu_v_root_weight * ((sqrt(sqrt(mu)) - sqrt(sqrt(mu_lo))) / (sqrt(sqrt(mu_hi)) - sqrt(sqrt(mu_lo)))) + "
+    "(1 - mu_v_root_weight) * ((mu / (1 + sqrt(1 - mu)) - mu_lo / (1 + sqrt(1 - mu_lo))) / "
+    "(mu_hi / (1 + sqrt(1 - mu_hi)) - mu_lo / (1 + sqrt(1 - mu_lo))))";
 
 // Kulla & Conty 2017 ("Revisiting physically based shading at Imageworks", energy
 // compensation): the multiple-scattering lobe

@@ -120,10 +120,9 @@ struct SceneMaterialHandle::Impl {
   std::optional<FresnelAvgConductorTable> avg;
   const Table* avg_above = nullptr;  // the two sides of n = 1, combined into avg after loading
   const Table* avg_below = nullptr;
-  const Table* mf[4] = {nullptr, nullptr, nullptr, nullptr};  // E_corr, E_sep, split_scale, split_bias
-  const Table* mf_avg[2] = {nullptr, nullptr};                // Eavg_corr, Eavg_sep (grid form)
-  double eavg[2] = {NAN, NAN};                                 // slices: attributes of the E_corr slice
-  std::optional<schema::microfacet_albedo::MuShear> mf_shear;  // grids on (alpha, s(mu; alpha))
+  MicrofacetAlbedoTables mf;     // E_corr, E_sep, split_scale, split_bias; the grid's mu coordinate
+  const Table* mf_avg[2] = {nullptr, nullptr};  // Eavg_corr, Eavg_sep (grid form)
+  double eavg[2] = {NAN, NAN};                  // slices: attributes of the E_corr slice
   double c = NAN, kd_value = NAN;
   std::map<std::string, const LoadedTable*> composite;  // role -> per-material table
   const LoadedTable* brdf_modes = nullptr;  // ls: main and corner zone of the BRDF modes
@@ -205,14 +204,16 @@ SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tab
             m.eavg[1] = t.info.attribute_number("Eavg_sep", NAN);
           }
         } else if (t.table.rank() == 3) {
+          // generalized Beckmann grid on (p, beta, v(mu)): the constants of v from its attributes
           schema::check_table(t.table, mf::kGBeckmann3d[q]);
+          m.mf.blend = detail::read_mu_blend(t);
         } else if (t.table.rank() == 2 && t.table.axis(1).name == mf::kS.name) {
           // GGX / Beckmann grid on (alpha, s(mu; alpha)): the constants of s from its attributes
-          m.mf_shear = detail::read_mu_shear(t);
+          m.mf.shear = detail::read_mu_shear(t);
         } else {
-          detail::check_last_axis_mu(t.table);
+          throw TableFileError("dataset '" + ds + "' is not a microfacet_albedo grid or scene slice");
         }
-        m.mf[q] = &t.table;
+        m.mf.e[q] = &t.table;
       } else if (role == "Eavg_corr" || role == "Eavg_sep") {
         m.mf_avg[role == "Eavg_corr" ? 0 : 1] = &t.table;
       } else if (role == "F_avg_n_above_1") {
@@ -355,23 +356,13 @@ namespace brdftab::lookup {
 
 MicrofacetAlbedoValues SceneMaterialHandle::microfacet_albedo(double mu) const {
   const Impl& m = *impl_;
-  double v[4];
-  for (int q = 0; q < 4; ++q) {
-    const Table* t = m.mf[q];
-    if (!t) missing(e_, std::string(schema::microfacet_albedo::kQuantities[static_cast<std::size_t>(q)]));
-    if (t->rank() == 1) {
-      v[q] = t->eval1(mu);
-    } else if (t->rank() == 2 && m.mf_shear) {
-      const double alpha = param("alpha");
-      v[q] = t->eval2(alpha, detail::sheared_coordinate(*m.mf_shear, *t, mu, alpha, OutOfDomain::clamp));
-    } else if (t->rank() == 2) {
-      v[q] = t->eval2(param("alpha"), mu);
-    } else {
-      const double x[3] = {param("p"), param("beta"), mu};
-      v[q] = t->eval(x);
-    }
-  }
-  return {v[0], v[1], v[2], v[3]};
+  for (std::size_t q = 0; q < 4; ++q)
+    if (!m.mf.e[q]) missing(e_, std::string(schema::microfacet_albedo::kQuantities[q]));
+  // Slices (rank 1) read mu alone; the grids read the material's roughness (and p).
+  const int rank = m.mf.e[0]->rank();
+  if (rank == 1) return lookup::microfacet_albedo(m.mf, mu, 1.0);
+  if (rank == 3) return lookup::microfacet_albedo(m.mf, mu, param("beta"), param("p"));
+  return lookup::microfacet_albedo(m.mf, mu, param("alpha"));
 }
 
 MicrofacetAlbedoAvgValues SceneMaterialHandle::microfacet_albedo_avg() const {

@@ -220,6 +220,8 @@ constexpr AttributeRule kDatasetRules[] = {
     // (lookup/microfacet_albedo_schema.hpp; lookup::detail::read_mu_shear checks them together)
     {"mu_s_root_weight", Kind::number, 0, 1, false},
     {"mu_s_log_scale", Kind::number, 0, 1e12, true},
+    // generalized Beckmann grids: the weight of the blended v(mu) (lookup::detail::read_mu_blend)
+    {"mu_v_root_weight", Kind::number, 0, 1, false},
     {"mu_lo", Kind::number, 0, 1, true},
     {"mu_hi", Kind::number, 0, 1, true},
     {"ls_kd", Kind::number, 0, 1, false},
