@@ -183,6 +183,8 @@ TEST_CASE("bench --pareto quick run: every quantity's CSV is well formed and san
                                           "microfacet_albedo_ggx_eavg",
                                           "microfacet_albedo_beckmann_e",
                                           "microfacet_albedo_beckmann_eavg",
+                                          "microfacet_albedo_gbeckmann_e",
+                                          "microfacet_albedo_gbeckmann_material_e",
                                           "htsg_distribution",
                                           "htsg_shadowing",
                                           "htsg_sigma0",

@@ -6,6 +6,9 @@
 //    Both compute all four quantities of the family per call (E correlated and separable,
 //    split-sum scale and bias); the error is that of E (height-correlated).
 //  - E_avg: exact (numerics::microfacet_albedo_avg, ~100 E each) against the E_avg tables.
+//  - Generalized Beckmann (validate/pareto_microfacet_albedo_gbeckmann.cpp): E on the 3-D
+//    (p, beta, v) tables at random p, E at one p on the per-p (beta, v) table against the 3-D
+//    one, and E_avg on (p, beta).
 // Reference: the exact numerics at the points (the tables are built from them, not measured
 // with them: the points are off-grid). Tables: the generated ones of --tables
 // (tables/microfacet_albedo.h5, through lookup::microfacet_albedo_tables) when present;
@@ -24,6 +27,7 @@
 #include "lookup/table_set.hpp"
 #include "numerics/microfacet_albedo.hpp"
 #include "validate/pareto.hpp"
+#include "validate/pareto_microfacet_albedo_gbeckmann.hpp"
 
 namespace brdftab::validate::microfacet_albedo {
 
@@ -189,6 +193,7 @@ std::vector<Quantity> pareto_quantities(const Options& o) {
     out.push_back(std::move(qa));
   }
   (void)sink;
+  for (Quantity& q : gbeckmann_quantities(o)) out.push_back(std::move(q));
   return out;
 }
 
