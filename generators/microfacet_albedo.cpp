@@ -1,7 +1,8 @@
 // Table family microfacet_albedo (issue 10): the directional albedo of a microfacet BRDF with
 // F = 1 and its split-sum pair, E(mu) = Integral D G2 / (4 mu_i mu_o) mu_i dw_i, for GGX,
-// Beckmann (on (alpha, s), s a sheared mu coordinate) and the generalized Beckmann NDF (on (p, beta, mu) and per
-// material on (beta, mu)), and the hemispherical averages E_avg = 2 Integral E mu dmu.
+// Beckmann (on (alpha, s), s a sheared mu coordinate) and the generalized Beckmann NDF (on
+// (p, beta, v) and per p on (beta, v), v a blended mu coordinate), and the hemispherical
+// averages E_avg = 2 Integral E mu dmu.
 // Exact values: numerics::microfacet_albedo_row (1e-10 absolute; one call gives all four
 // quantities) and numerics::microfacet_albedo_avg. Schema and axis transforms (with the
 // reasons): lookup/microfacet_albedo_schema.hpp.
@@ -312,20 +313,23 @@ constexpr double kValueSeconds = 3e-3, kGValueSeconds = 5e-3, kAvgPerValue = 130
 // points found 1.1e-5). Roughness r_lo * {1.01, 1.07, 1.2, 1.5, 2}, mu = r * {1, 1.5, 2, 2.5,
 // 3, 4}, inside the ranges; `outer` holds leading coordinates (p for the 3-D tables).
 constexpr const char* kTargetedText = "roughness r = r_lo * {1.01, 1.07, 1.2, 1.5, 2}, mu = r * {1, 1.5, 2, 2.5, 3, 4}";
+// Appends the points outer + (r, mu) for each mu of mus inside [mu_lo, mu_hi].
+void add_targets(std::vector<std::vector<double>>& pts, const std::vector<double>& outer, double r,
+                 const std::vector<double>& mus, double mu_lo, double mu_hi) {
+  for (double mu : mus) {
+    if (!(mu >= mu_lo && mu <= mu_hi)) continue;
+    std::vector<double> pt = outer;
+    pt.push_back(r);
+    pt.push_back(mu);
+    pts.push_back(std::move(pt));
+  }
+}
 std::vector<std::vector<double>> targeted_grazing(double r_lo, double r_hi, double mu_lo, double mu_hi,
                                                   const std::vector<double>& outer) {
   std::vector<std::vector<double>> pts;
   for (double fr : {1.01, 1.07, 1.2, 1.5, 2.0}) {
     const double r = r_lo * fr;
-    if (r > r_hi) continue;
-    for (double fm : {1.0, 1.5, 2.0, 2.5, 3.0, 4.0}) {
-      const double mu = r * fm;
-      if (!(mu >= mu_lo && mu <= mu_hi)) continue;
-      std::vector<double> pt = outer;
-      pt.push_back(r);
-      pt.push_back(mu);
-      pts.push_back(std::move(pt));
-    }
+    if (r <= r_hi) add_targets(pts, outer, r, {r, 1.5 * r, 2 * r, 2.5 * r, 3 * r, 4 * r}, mu_lo, mu_hi);
   }
   return pts;
 }
@@ -339,15 +343,7 @@ constexpr const char* kTargetedNormalText = "beta at every beta-cell midpoint, m
 std::vector<std::vector<double>> targeted_normal(const std::vector<double>& betas, double mu_lo, double mu_hi,
                                                  const std::vector<double>& outer) {
   std::vector<std::vector<double>> pts;
-  for (double r : betas) {
-    for (double mu : {0.93, 0.97, 0.99, 0.997, 0.9995}) {
-      if (!(mu >= mu_lo && mu <= mu_hi)) continue;
-      std::vector<double> pt = outer;
-      pt.push_back(r);
-      pt.push_back(mu);
-      pts.push_back(std::move(pt));
-    }
-  }
+  for (double r : betas) add_targets(pts, outer, r, {0.93, 0.97, 0.99, 0.997, 0.9995}, mu_lo, mu_hi);
   return pts;
 }
 // The midpoints (in the transformed coordinate) of the n - 1 cells of an axis on [lo, hi].
@@ -492,9 +488,10 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
     // near normal: p next to both ends (E falls most steeply in beta at p_hi) and at the
     // midpoints of the middle and last p cells
     const std::vector<double> pm = cell_midpoints(sc::kP, c.p_lo, c.p_hi, np, c.g_p_scale);
+    const double p_near_lo = std::min(c.p_lo * 1.01, pm.front()), p_near_hi = std::max(c.p_hi / 1.01, pm.back());
     spec.targeted_points = targeted_v(nb, {std::sqrt(c.p_lo * c.p_hi)},
-                                      {{c.p_lo * 1.01}, {pm[pm.size() / 2]}, {pm.back()}, {c.p_hi / 1.01}});
-    spec.targeted_text = targeted_text + " (grazing at p = sqrt(p_lo p_hi); near normal at p = 1.01 p_lo, p_hi / 1.01 "
+                                      {{p_near_lo}, {pm[pm.size() / 2]}, {pm.back()}, {p_near_hi}});
+    spec.targeted_text = targeted_text + " (grazing at p = sqrt(p_lo p_hi); near normal at p = 1.01 p_lo, p_hi / 1.01 (or the end cells' midpoints if nearer the ends) "
                                          "and the midpoints of the middle and last p cells); as (p, beta, v(mu))";
     const RowFunction row = [&v_row, q](std::span<const double> outer, std::span<const double> vs, std::span<double> out) {
       v_row(outer[1], outer[0], vs, out, q);
@@ -503,7 +500,7 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
     set_blend_attributes(t, sc::kInputsV3, "value = table(p, beta, v(mu)); see lookup::microfacet_albedo");
     tables.push_back(std::move(t));
   }
-  // Per material: (beta, mu) at a fixed p on its own finer grid (2-D: far more nodes per
+  // Per p: (beta, v) at a fixed p on its own finer grid (2-D: far more nodes per
   // axis in the same size; cache hits where p is a p node and the nodes coincide).
   const int nb_m = log_points(c.beta_lo, c.beta_hi, c.g_material_log_beta_step);
   const int nm_m = points_for_step(1.0, c.g_material_v_step);
@@ -529,7 +526,7 @@ void build_gbeckmann(const Config& c, const GenerateContext& ctx, std::vector<Bu
       tables.push_back(std::move(t));
     }
   }
-  // E_avg(p, beta): ~600 E_avg (~200 CPU-s), counted with the precise grids (the CI
+  // E_avg(p, beta): 80 x 200 E_avg (~1 CPU-h), counted with the precise grids (the CI
   // regeneration skips it; tests/test_committed_tables.cpp checks the committed one at
   // random nodes instead).
   for (int q = 0; q < 2 && c.precise; ++q) {

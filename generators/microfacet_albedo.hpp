@@ -18,7 +18,7 @@ inline constexpr const char* kSummary =
     "Beckmann NDF, height-correlated and separable G2";
 
 // Resolution as steps in ln(alpha) and the sheared s(mu; alpha) of GGX and Beckmann (ln(beta),
-// p / (k + p), mu^(1/4) for the generalized Beckmann); README and the report give the measured
+// p / (k + p) and the blended v(mu) for the generalized Beckmann); README and the report give the measured
 // errors and generation times. The precise grid is the compact
 // one refined precise_refine times in each axis, so every compact node is a precise node and
 // its exact values are computed once (generators/microfacet_albedo.cpp, AlbedoCache).
@@ -44,7 +44,7 @@ struct Config {
   // g_material_v_step). The p axis is regular
   // in u = p / (k + p), k = g_p_scale (steps g_p_step, g_avg_p_step in u): nearly 1/p for
   // small k, which spends the nodes at small p where E changes fastest (README). The E_avg
-  // grid (~600 E_avg, ~200 CPU-s) is generated with the precise grids (`precise`).
+  // grid (80 x 200 E_avg, ~1 CPU-h) is generated with the precise grids (`precise`).
   bool gbeckmann = true;
   double beta_lo = 0.05, beta_hi = 1, p_lo = 0.5, p_hi = 2;
   double g_p_scale = 0.02;
@@ -55,8 +55,8 @@ struct Config {
   std::vector<double> material_p = {0.5, 2.0};
   // Per p: 72 x 111 (31.2 KiB) on (ln beta, v).
   double g_material_log_beta_step = 0.0422, g_material_v_step = 1.0 / 110;
-  // E_avg: 17 x 36 (p, ln beta), float64.
-  double g_avg_log_beta_step = 0.0856, g_avg_p_step = 0.00179;
+  // E_avg: 80 x 200 (p, ln beta), float64 (~16000 E_avg, ~1 CPU-h: with the precise grids).
+  double g_avg_log_beta_step = 0.015054, g_avg_p_step = 0.00036153;
   // Off-grid error samples (rows x per row); each costs one exact E (0.2-20 ms; the
   // generalized Beckmann 1-20 ms) or one E_avg (~100 E).
   int error_rows = 48, error_per_row = 24;

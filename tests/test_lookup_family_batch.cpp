@@ -248,6 +248,57 @@ TEST_CASE("microfacet_albedo_batch and kulla_conty_lobe_batch against their scal
   }
 }
 
+TEST_CASE("microfacet_albedo_batch on the per-p (beta, v) tables and on mu slices against the scalar lookup") {
+  TableSet ts(kTables);
+  // A per-p generalized Beckmann set (committed, p = 2) and a rank-1 slice set on mu^(1/4)
+  // (as `generate --scene` writes them; rough values, every node matters).
+  const MicrofacetAlbedoTables per_p = microfacet_albedo_material_tables(ts, 2.0);
+  std::vector<double> v(33);
+  std::mt19937_64 vr(12);
+  for (double& x : v) x = std::uniform_real_distribution<double>(0.0, 1.0)(vr);
+  const Table slice("slice", {make_axis("mu", Transform::fourth_root, 1e-6, 1.0, 33)}, v, Storage::float64,
+                    Interpolation::cubic);
+  MicrofacetAlbedoTables slices;
+  slices.e = {&slice, &slice, &slice, &slice};
+  for (const MicrofacetAlbedoTables* t : std::initializer_list<const MicrofacetAlbedoTables*>{&per_p, &slices}) {
+    const bool is_slice = t == &slices;
+    const double bound = is_slice ? 0.0 : log_bound(*t->e[0], {0});  // beta is a log axis; v, mu^(1/4) are exact
+    for (bool avx2 : {true, false}) {
+      detail::set_avx2_enabled(avx2);
+      std::mt19937_64 rng(13);
+      for (std::size_t n : kSizes) {
+        std::vector<double> mu(n), beta(n), out(n, -7.0);
+        for (std::size_t i = 0; i < n; ++i) mu[i] = awkward(rng, 1e-6, 1), beta[i] = awkward(rng, 0.05, 1);
+        double worst = 0;
+        int nan_mismatch = 0;
+        for (int q = 0; q < 4; ++q) {
+          const auto quantity = static_cast<MicrofacetAlbedoQuantity>(q);
+          microfacet_albedo_batch(*t, quantity, mu, beta, {}, out);
+          for (std::size_t i = 0; i < n; ++i) {
+            const double one = microfacet_albedo(*t, quantity, mu[i], beta[i]);
+            if ((one != one) != (out[i] != out[i])) ++nan_mismatch;
+            else if (one == one) worst = std::max(worst, std::abs(out[i] - one));
+          }
+        }
+        INFO((is_slice ? "slices" : "per-p p = 2") << ", avx2 " << avx2 << ", n = " << n << ": max |batch - scalar| " << worst);
+        CHECK(nan_mismatch == 0);
+        CHECK(worst <= (avx2 ? bound : 0.0));
+      }
+    }
+    detail::set_avx2_enabled(true);
+  }
+  // Constants that do not match the last axis are refused: blend on a slice on mu, none on v.
+  MicrofacetAlbedoTables wrong = slices;
+  wrong.blend = schema::microfacet_albedo::MuBlend{};
+  CHECK_THROWS_WITH_AS(microfacet_albedo(wrong, 0.5, 0.3), doctest::Contains("is on mu but the tables carry blend"),
+                       std::invalid_argument);
+  MicrofacetAlbedoTables bare = per_p;
+  bare.blend.reset();
+  std::vector<double> one{0.5}, out(1);
+  CHECK_THROWS_WITH_AS(microfacet_albedo_batch(bare, MicrofacetAlbedoQuantity::e_corr, one, one, {}, out),
+                       doctest::Contains("no blend constants"), std::invalid_argument);
+}
+
 TEST_CASE("ls_plane_albedo_batch, hazy_gloss_albedo_batch and htsg_distribution_batch against their scalar lookups") {
   const LoadedTable ls_t = load_table(kTables / "ls.h5", "ls_albedo");
   const LsAlbedoTable ls(ls_t.table);

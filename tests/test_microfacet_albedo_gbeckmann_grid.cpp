@@ -47,7 +47,7 @@ TEST_CASE("microfacet_albedo gbeckmann grid: p on p/(k+p), no E_avg without the 
   CHECK(t.avg[0] == nullptr);
   CHECK(t.avg[1] == nullptr);
   CHECK_THROWS_AS(lookup::microfacet_albedo_avg(t, 0.4, 1.2), std::invalid_argument);
-  // The directional tables read (p, beta, mu) through the transform: within the stated error
+  // The directional tables read (p, beta, v(mu)) through the transform: within the stated error
   // of the exact numerics at an off-grid point.
   double stated = 0;
   for (int q = 0; q < 4; ++q)

@@ -6,6 +6,7 @@
 // grid built here with the family's generator (p in [1, 1.5], beta in [0.3, 0.6], mu in
 // [0.2, 1], 5 x 8 x 16 nodes, per-p table at p = 1.2, no E_avg). Both table kinds go through
 // lookup::microfacet_albedo with the v(mu) constants of their attributes (or of the config).
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -52,7 +53,10 @@ std::unique_ptr<GSource> gsource(const Options& o) {
       s->material_p = 2.0;  // the steeper of the two default per-p tables
       s->material = lookup::microfacet_albedo_material_tables(*s->set, s->material_p);
       s->name = "generated (" + (o.tables_dir / sc::kFile).string() + ")";
-      s->p_lo = 0.5, s->p_hi = 2, s->beta_lo = 0.05, s->beta_hi = 1, s->mu_lo = 1e-3, s->mu_hi = 1;
+      // the generated ranges (mu from 1e-3 up: grazing below that is the tables' easy part)
+      const lookup::Axis &ap = s->grid.e[0]->axis(0), &ab = s->grid.e[0]->axis(1);
+      s->p_lo = ap.x_lo, s->p_hi = ap.x_hi, s->beta_lo = ab.x_lo, s->beta_hi = ab.x_hi;
+      s->mu_lo = std::max(1e-3, s->grid.blend->mu_lo), s->mu_hi = s->grid.blend->mu_hi;
       return s;
     } catch (const std::exception&) {
       s = std::make_unique<GSource>();  // a file of another layout: build instead

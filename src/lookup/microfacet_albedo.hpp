@@ -167,7 +167,7 @@ inline MicrofacetAlbedoTables microfacet_albedo_tables(TableSet& ts, const std::
   return out;
 }
 
-// Per material (generalized Beckmann at a fixed p, tables on (beta, mu)); no averages.
+// Per p (generalized Beckmann at a fixed p, tables on (beta, v(mu))); no averages.
 inline MicrofacetAlbedoTables microfacet_albedo_material_tables(TableSet& ts, double p) {
   namespace sc = schema::microfacet_albedo;
   MicrofacetAlbedoTables out;
@@ -199,9 +199,16 @@ inline double mu_coordinate_unchecked(const MicrofacetAlbedoTables& t, double mu
   if (t.blend) return blended_coordinate(*t.blend, *t.e[0], mu, policy);
   return mu;
 }
+// The constants must match the last axis: shear <-> s, blend <-> v, neither <-> mu.
 inline void check_mu_constants(const MicrofacetAlbedoTables& t, const Table& tab) {
-  if (!t.shear && !t.blend && tab.axis(tab.rank() - 1).name != schema::microfacet_albedo::kMu.name) [[unlikely]]
-    throw_no_mu_constants(tab);
+  namespace sc = schema::microfacet_albedo;
+  const std::string& axis = tab.axis(tab.rank() - 1).name;
+  const std::string_view want = t.shear ? sc::kS.name : t.blend ? sc::kV.name : sc::kMu.name;
+  if (axis == want && !(t.shear && t.blend)) [[likely]] return;
+  if (!t.shear && !t.blend) throw_no_mu_constants(tab);
+  throw std::invalid_argument("microfacet_albedo: table '" + tab.name() + "' is on " + axis + " but the tables carry " +
+                              (t.shear && t.blend ? std::string("both shear and blend") : t.shear ? "shear" : "blend") +
+                              " constants (" + std::string(t.shear ? sc::kS.name : sc::kV.name) + "(mu))");
 }
 inline double mu_coordinate(const MicrofacetAlbedoTables& t, double mu, double alpha, OutOfDomain policy) {
   check_mu_constants(t, *t.e[0]);

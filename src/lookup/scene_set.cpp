@@ -206,10 +206,14 @@ SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tab
         } else if (t.table.rank() == 3) {
           // generalized Beckmann grid on (p, beta, v(mu)): the constants of v from its attributes
           schema::check_table(t.table, mf::kGBeckmann3d[q]);
-          m.mf.blend = detail::read_mu_blend(t);
+          const mf::MuBlend b = detail::read_mu_blend(t);
+          if (m.mf.blend && !(*m.mf.blend == b)) throw TableFileError("its v(mu) constants differ from the other grids'");
+          m.mf.blend = b;
         } else if (t.table.rank() == 2 && t.table.axis(1).name == mf::kS.name) {
           // GGX / Beckmann grid on (alpha, s(mu; alpha)): the constants of s from its attributes
-          m.mf.shear = detail::read_mu_shear(t);
+          const mf::MuShear sh = detail::read_mu_shear(t);
+          if (m.mf.shear && !(*m.mf.shear == sh)) throw TableFileError("its s(mu; alpha) constants differ from the other grids'");
+          m.mf.shear = sh;
         } else {
           throw TableFileError("dataset '" + ds + "' is not a microfacet_albedo grid or scene slice");
         }
@@ -229,6 +233,12 @@ SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tab
       }
     }
     if (m.avg_above || m.avg_below) m.avg.emplace(m.avg_above, m.avg_below);
+    // The four microfacet_albedo tables of a material are one kind (slices, (alpha, s) or
+    // (p, beta, v) grids): read with one coordinate.
+    for (const Table* t : m.mf.e)
+      if (t && m.mf.e[0] && (t->rank() != m.mf.e[0]->rank() || t->axis(t->rank() - 1).name != m.mf.e[0]->axis(m.mf.e[0]->rank() - 1).name))
+        throw TableFileError("its microfacet_albedo tables '" + m.mf.e[0]->name() + "' and '" + t->name() +
+                             "' are of different kinds");
   } catch (const TableFileError& ex) {
     throw TableFileError("scene material '" + e_.name + "': " + ex.what());
   } catch (const std::exception& ex) {

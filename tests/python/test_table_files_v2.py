@@ -245,10 +245,10 @@ def test_derived_axes_reproduced_from_the_file_alone():
                 # what eval's table method reads
                 ref = brdftab.microfacet_albedo_gbeckmann(mu=mu, beta=beta, p=p, method="table", tables=TABLE_DIR)[quantity]
                 assert inputs == ["p", "beta", "mu"]
-            else:  # v written out by hand from the attributes (1 - sqrt(1 - mu) as printed), then brdftab.Table
+            else:  # v written out by hand from the attributes, then brdftab.Table
                 mine = t.from_inputs(beta=beta, mu=mu)
                 q = lambda x: np.sqrt(np.sqrt(x))
-                g = lambda x: 1 - np.sqrt(1 - x)
+                g = lambda x: x / (1 + np.sqrt(1 - x))  # 1 - sqrt(1 - x), as the attribute writes it
                 v = w * (q(mu) - q(mu_lo)) / (q(mu_hi) - q(mu_lo)) + (1 - w) * (g(mu) - g(mu_lo)) / (g(mu_hi) - g(mu_lo))
                 ref = brdftab.Table(path, name)(beta, v, clamp=True)
                 assert inputs == ["beta", "mu"]
