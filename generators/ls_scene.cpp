@@ -6,7 +6,7 @@
 //           (8 modes, 32 x 32 + 24 x 24 nodes);
 //   grid:   the k_d(c) (65) and A(c, mu) (41 x 41) tables: c(k_d) by inverting k_d; plus the
 //           generic ls_brdf_modes / ls_brdf_corner over c.
-// Roles: "albedo", "kd" (grid), "ls_brdf_modes", "ls_brdf_corner" (runtime:
+// Roles: "albedo", "k_d" (grid; "kd" in older indexes), "ls_brdf_modes", "ls_brdf_corner" (runtime:
 // lookup/scene_set.cpp). families.ls.brdf = false leaves the BRDF tables out.
 // A solve costs ~0.5 s, the grids ~100 solves: slices win for a few materials, the grid for
 // many (the crossover is measured in docs/scenes.md).
@@ -47,7 +47,7 @@ std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& 
       }
     } else {
       u.tables.push_back({"albedo", std::string(sc::kFile), std::string(sc::kAlbedo.name)});
-      u.tables.push_back({"kd", std::string(sc::kFile), std::string(sc::kKd.name)});
+      u.tables.push_back({"k_d", std::string(sc::kFile), std::string(sc::kKd.name)});
       if (brdf) {
         u.tables.push_back({"ls_brdf_modes", std::string(sc::kFile), std::string(sc::kBrdfModes.name)});
         u.tables.push_back({"ls_brdf_corner", std::string(sc::kFile), std::string(sc::kBrdfCorner.name)});

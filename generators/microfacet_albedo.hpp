@@ -75,7 +75,7 @@ Config test_config();
 Config narrowed(Config c);
 
 // Scene hook (generators/microfacet_albedo_scene.cpp): materials with a GGX, Beckmann or
-// generalized Beckmann lobe ("ggx", "beckmann": alpha; "generalized_beckmann": p,
+// generalized Beckmann lobe ("ggx", "beckmann": alpha; "gbeckmann": p,
 // beta) get four 1-D tables each (E_corr, E_sep, split pair on mu; exact E_avg as attributes
 // of the E_corr slice), or share the generic grids. "ghs" materials are not served.
 std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);

@@ -1,6 +1,6 @@
 // Scene hook of microfacet_albedo: the directional albedo E(mu), the split-sum pair and E_avg
 // of each material with a microfacet lobe: "ggx" and "beckmann" (alpha) and
-// "generalized_beckmann" (p, beta). Not "ghs": the two-scale model's energy is its own
+// "gbeckmann" (p, beta). Not "ghs": the two-scale model's energy is its own
 // family's business (hp), and a generalized Beckmann slice costs ~270 exact E of 1-20 ms
 // (~2-5 s per material) that a GHS scene does not ask for.
 //   slices: four 1-D tables on mu per material at its roughness (material_mu_points float64,
@@ -40,7 +40,7 @@ void check_material(const SceneMaterial& m, const char* key, double lo, double h
 std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& all, const CostPolicy& policy) {
   const auto ggx = materials_of(all, {"ggx"});
   const auto beckmann = materials_of(all, {"beckmann"});
-  const auto gb = materials_of(all, {"generalized_beckmann"});
+  const auto gb = materials_of(all, {"gbeckmann"});
   if (ggx.empty() && beckmann.empty() && gb.empty()) return std::nullopt;
   namespace sc = schema::microfacet_albedo;
 

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iostream>
 #include <regex>
 #include <set>
 
 #include "generators/family.hpp"
 #include "generators/scene_models.hpp"
 #include "lookup/number_format.hpp"
+#include "lookup/renamed_names.hpp"
 
 namespace brdftab::gen {
 
@@ -36,10 +38,13 @@ SceneMaterial read_material(const nlohmann::json& obj, std::size_t i) {
   where += " '" + m.name + "'";
   const auto model = obj.find("model");
   if (model == obj.end()) throw SceneError(where + ": key 'model' is missing (one of: " + known_models() + ")");
-  if (!model->is_string() || !find_scene_model(model->get<std::string>()))
+  // A deprecated model name (lookup/renamed_names.hpp) reads as its glossary name, with a warning.
+  const names::Renamed* renamed = model->is_string() ? names::renamed(names::Kind::scene_model, model->get<std::string>()) : nullptr;
+  if (renamed) std::cerr << names::deprecation_warning(*renamed) << " (" << where << ")\n";
+  m.model = renamed ? std::string(renamed->name) : model->is_string() ? model->get<std::string>() : std::string();
+  if (!model->is_string() || !find_scene_model(m.model))
     throw SceneError(where + ": key 'model' = " + describe_json(*model) + " is not a known model (one of: " +
                      known_models() + ")");
-  m.model = model->get<std::string>();
   read_material_params(*find_scene_model(m.model), obj, where, m);
   return m;
 }

@@ -26,7 +26,7 @@ const std::vector<SceneModel>& scene_models() {
         {"c", 1, 100, true, false, true, "K-correlation exponent of the diffraction spectrum"}, kEta, kN, kK},
        {},
        {{"n", "k"}}},
-      {"generalized_beckmann", "generalized Beckmann microfacet lobe (Holzschuch & Pacanowski Sec. 4)",
+      {"gbeckmann", "generalized Beckmann microfacet lobe (Holzschuch & Pacanowski Sec. 4)",
        {kP, kBeta, kEta, kN, kK},
        {},
        {{"n", "k"}}},

@@ -45,7 +45,7 @@ Config test_config();
 Config narrowed(Config c);
 
 // Scene hook (generators/smith_gbeckmann_scene.cpp): materials with a generalized Beckmann
-// lobe ("ghs", "generalized_beckmann": p) get a 1-D G1 table each or share the precise grid.
+// lobe ("ghs", "gbeckmann": p) get a 1-D G1 table each or share the precise grid.
 std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& materials, const CostPolicy& policy);
 
 }  // namespace brdftab::gen::smith_gbeckmann

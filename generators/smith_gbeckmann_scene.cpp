@@ -1,5 +1,5 @@
 // Scene hook of smith_gbeckmann: Smith G1 for each material with a generalized Beckmann lobe
-// (models "ghs" and "generalized_beckmann", parameter p).
+// (models "ghs" and "gbeckmann", parameter p).
 //   slices: one 1-D table of G1(b) at the material's p (320 points float64, 2.5 KB);
 //   grid:   the precise (p, b) grid (64 x 320 float64, 160 KB), its p range widened to
 //           hold every material.
@@ -13,7 +13,7 @@
 namespace brdftab::gen::smith_gbeckmann {
 
 std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& all, const CostPolicy& policy) {
-  const auto mats = materials_of(all, {"ghs", "generalized_beckmann"});
+  const auto mats = materials_of(all, {"ghs", "gbeckmann"});
   if (mats.empty()) return std::nullopt;
   Config slices, grid;
   slices.compact = slices.precise = false;

@@ -4,4 +4,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
-./build/brdftab generate --manifest tables/default.json --out tables
+./build/brdftab generate --manifest tables/default.json --tables tables

@@ -15,10 +15,10 @@ for n in 1 10 100 1000; do
   echo "== $n materials"
   "$exe" plan --scene "$work/scene$n.json" | sed -n '2,6p'
   s=$(date +%s.%N)
-  /usr/bin/time -f "peak_rss_kb %M" "$exe" generate -q --scene "$work/scene$n.json" --out "$d" > "$d.log" 2> "$d.time"
+  /usr/bin/time -f "peak_rss_kb %M" "$exe" generate -q --scene "$work/scene$n.json" --tables "$d" > "$d.log" 2> "$d.time"
   e=$(date +%s.%N)
   s2=$(date +%s.%N)
-  "$exe" generate -q --scene "$work/scene$n.json" --out "$d" > "$d.log2"
+  "$exe" generate -q --scene "$work/scene$n.json" --tables "$d" > "$d.log2"
   e2=$(date +%s.%N)
   echo "generate: $(echo "$e - $s" | bc) s, $(cat "$d.time"); second generate: $(echo "$e2 - $s2" | bc) s ($(tail -c 120 "$d.log2"))"
   echo "bytes on disk: $(du -cb "$d"/*.h5 "$d"/scene.index | tail -1 | cut -f1)"

@@ -30,7 +30,7 @@ fs::path demo_tables() {
     std::ofstream(d / "manifest.json") << R"({"schema_version": 1, "tables": {"demo": {"x_points": 129, "y_step": 0.05}}})";
     // A timestamp only when asked (reproducible output): info shows it then.
     ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
-    const auto r = run_cli("generate --quiet --manifest '" + (d / "manifest.json").string() + "' --out '" + d.string() + "'");
+    const auto r = run_cli("generate --quiet --manifest '" + (d / "manifest.json").string() + "' --tables '" + d.string() + "'");
     ::unsetenv("SOURCE_DATE_EPOCH");
     REQUIRE(r.status == 0);
     return d;
@@ -46,13 +46,13 @@ TEST_CASE("generate writes the table and a summary with its measured error") {
   // --rebuild: demo.h5 is up to date (same manifest), a plain generate would skip it.
   // Stamped like demo_tables() (the info test reads the timestamp when run in-process).
   ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
-  const auto r = run_cli("generate --rebuild --manifest '" + (d / "manifest.json").string() + "' --out '" + d.string() + "'");
+  const auto r = run_cli("generate --rebuild --manifest '" + (d / "manifest.json").string() + "' --tables '" + d.string() + "'");
   CHECK(r.status == 0);
   CHECK(r.out.find("demo_exp_cos") != std::string::npos);
   CHECK(r.out.find("max_rel_err") != std::string::npos);
   ::unsetenv("SOURCE_DATE_EPOCH");
   CHECK(r.err.find("demo_exp_cos: fill") != std::string::npos);  // plain progress lines (not a terminal)
-  const auto q = run_cli("generate --quiet --manifest '" + (d / "manifest.json").string() + "' --out '" + d.string() + "'");
+  const auto q = run_cli("generate --quiet --manifest '" + (d / "manifest.json").string() + "' --tables '" + d.string() + "'");
   CHECK(q.err.empty());
 }
 
@@ -163,7 +163,7 @@ TEST_CASE("generate rejects a bad manifest with exit 2 and names the key") {
   const fs::path d = fs::path(BRDFTAB_TEST_TMP) / ("cli_bad_manifest_" + std::to_string(::getpid()));
   fs::create_directories(d);
   std::ofstream(d / "m.json") << R"({"schema_version": 1, "tables": {"demo": {"y_step": -3}}})";
-  const auto r = run_cli("generate --quiet --manifest '" + (d / "m.json").string() + "' --out '" + d.string() + "'");
+  const auto r = run_cli("generate --quiet --manifest '" + (d / "m.json").string() + "' --tables '" + d.string() + "'");
   CHECK(r.status == 2);
   CHECK(r.err.find("tables.demo.y_step = -3 is outside [1e-04, 1]") != std::string::npos);
   CHECK(!fs::exists(d / "demo.h5"));

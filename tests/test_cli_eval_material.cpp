@@ -29,7 +29,7 @@ fs::path generate(const std::string& name, const std::string& family_json) {
   fs::remove_all(d);
   fs::create_directories(d);
   std::ofstream(d / "manifest.json") << R"({"schema_version": 1, "tables": {)" << family_json << "}}";
-  const auto r = run_cli("generate -q --manifest '" + (d / "manifest.json").string() + "' --out '" + (d / "t").string() + "'");
+  const auto r = run_cli("generate -q --manifest '" + (d / "manifest.json").string() + "' --tables '" + (d / "t").string() + "'");
   INFO(r.err);
   REQUIRE(r.status == 0);
   return d / "t";
@@ -69,9 +69,9 @@ TEST_CASE("eval --dataset smith_gbeckmann_g1_material_NAME: G1 at the material's
   const std::string a_values[] = {"0", "0.05", "0.3", "0.9", "2.5", "40"};
   std::string with_p = "p,a\n", without_p = "a\n";
   for (const auto& a : a_values) with_p += "1.7," + a + "\n", without_p += a + "\n";
-  const auto table = column(eval("smith_gb" + tables, with_p), "G1");
-  const auto exact = column(eval("smith_gb --method exact", with_p), "G1");
-  CHECK(column(eval("smith_gb" + tables, without_p), "G1") == table);
+  const auto table = column(eval("smith_gbeckmann" + tables, with_p), "G1");
+  const auto exact = column(eval("smith_gbeckmann --method exact", with_p), "G1");
+  CHECK(column(eval("smith_gbeckmann" + tables, without_p), "G1") == table);
   const double stated = brdftab::lookup::load_table(dir / "smith_gbeckmann.h5", "smith_gbeckmann_g1_material_gold")
                             .info.attribute_number("max_abs_error", NAN);
   REQUIRE(stated > 0);
@@ -79,17 +79,17 @@ TEST_CASE("eval --dataset smith_gbeckmann_g1_material_NAME: G1 at the material's
   REQUIRE(table.size() == std::size(a_values));
   for (std::size_t i = 0; i < table.size(); ++i) CHECK(std::abs(table[i] - exact[i]) <= stated);
   // The other material's slice answers differently (it is not the gold table).
-  const auto paint = column(eval("smith_gb --method table --tables '" + dir.string() +
+  const auto paint = column(eval("smith_gbeckmann --method table --tables '" + dir.string() +
                                      "' --dataset smith_gbeckmann_g1_material_paint",
                                  "a\n0.9\n"),
                             "G1");
   CHECK(std::abs(paint[0] - table[3]) > 1e-3);
   // A row that contradicts the material: exit 2 naming the row, the column and both values.
-  const std::string e = eval("smith_gb" + tables, "p,a\n1.7,0.5\n1.8,0.5\n", 2);
+  const std::string e = eval("smith_gbeckmann" + tables, "p,a\n1.7,0.5\n1.8,0.5\n", 2);
   CHECK(contains(e, "row 2 (line 3), column 'p': value '1.8'"));
   CHECK(contains(e, "smith_gbeckmann_g1_material_gold' holds p = 1.7"));
   // A material the file lacks.
-  const std::string missing = eval("smith_gb" + std::string(" --method table --tables '") + dir.string() +
+  const std::string missing = eval("smith_gbeckmann" + std::string(" --method table --tables '") + dir.string() +
                                        "' --dataset smith_gbeckmann_g1_material_silver",
                                    "a\n0.5\n", 2);
   CHECK(contains(missing, "smith_gbeckmann_g1_material_silver"));

@@ -45,7 +45,7 @@ TEST_CASE("eval keeps CR LF split across its 1 MiB read blocks as one line end")
 }
 
 TEST_CASE("eval refuses an input column named like an output column (exit 2)") {
-  const auto r = run_cli("eval smith_gb --method exact", "p,a,G1\n2,0.5,7\n");
+  const auto r = run_cli("eval smith_gbeckmann --method exact", "p,a,G1\n2,0.5,7\n");
   CHECK(r.status == 2);
   CHECK(contains(r.err, "input column 'G1' has the name of an output column (outputs: Lambda, G1)"));
   CHECK(r.out.empty());

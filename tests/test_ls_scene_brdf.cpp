@@ -30,9 +30,9 @@ TEST_CASE("ls scene by k_d: the handle's BRDF agrees with the exact half-space s
   const std::string scene = (d / "scene.json").string(), out = (d / "out").string();
   std::ofstream(scene) << R"({"materials": [{"name": "paint", "model": "ls", "k_d": 0.5}],
                              "families": {"ls": {"form": "slices"}, "hfunc": {"form": "slices"}}})";
-  auto r = run_cli("generate -q --scene '" + scene + "' --out '" + out + "'");
+  auto r = run_cli("generate -q --scene '" + scene + "' --tables '" + out + "'");
   REQUIRE_MESSAGE(r.status == 0, r.err);
-  r = run_cli("check '" + out + "' --scene '" + scene + "'");
+  r = run_cli("check --tables '" + out + "' --scene '" + scene + "'");
   CHECK_MESSAGE(r.status == 0, r.out << r.err);
 
   lookup::SceneSet set(out);
@@ -72,7 +72,7 @@ TEST_CASE("ls scene: families.ls.brdf must be a boolean") {
   const fs::path d = brdftab::testing::scratch_dir("scene_ls_brdf_bad");
   std::ofstream(d / "scene.json") << R"({"materials": [{"name": "paint", "model": "ls", "k_d": 0.5}],
                                          "families": {"ls": {"brdf": 1}}})";
-  const auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + (d / "out").string() + "'");
+  const auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --tables '" + (d / "out").string() + "'");
   CHECK(r.status == 2);
   CHECK(contains(r.err, "families.ls.brdf"));
   CHECK_FALSE(fs::exists(d / "out" / "ls.h5"));

@@ -142,11 +142,11 @@ TEST_CASE("manifest: ranges too narrow for a grid are refused before computing, 
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "m.json") << R"({"schema_version": 1, "tables": {"demo": {"y_range": [0.5, 0.5000000000000001]}}})";
   std::ofstream(dir / "big.json") << R"({"schema_version": 1, "tables": {"demo": {"x_points": 1e400}}})";
-  auto r = brdftab::testing::run_cli("generate -q --manifest '" + (dir / "m.json").string() + "' --out '" +
+  auto r = brdftab::testing::run_cli("generate -q --manifest '" + (dir / "m.json").string() + "' --tables '" +
                                      (dir / "out").string() + "'");
   CHECK(r.status == 2);
   CHECK(has(r.err, "tables.demo.y_range = [0.5, 0.5000000000000001] is too narrow to hold a grid"));
-  r = brdftab::testing::run_cli("generate -q --manifest '" + (dir / "big.json").string() + "' --out '" +
+  r = brdftab::testing::run_cli("generate -q --manifest '" + (dir / "big.json").string() + "' --tables '" +
                                 (dir / "out").string() + "'");
   CHECK(r.status == 2);
   CHECK(has(r.err, "manifest.tables.demo.x_points: number out of range"));

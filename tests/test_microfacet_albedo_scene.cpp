@@ -29,7 +29,7 @@ TEST_CASE("microfacet_albedo scene: slices per material, off-grid values and E_a
   std::ofstream(d / "scene.json") << R"({"schema_version": 1, "materials": [
     {"name": "steel", "model": "ggx", "alpha": 0.3, "n": 2.5, "k": 3.0},
     {"name": "satin", "model": "beckmann", "alpha": 0.5}]})";
-  auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + (d / "out").string() + "'");
+  auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --tables '" + (d / "out").string() + "'");
   REQUIRE_MESSAGE(r.status == 0, r.err);
   std::set<std::string> names;
   for (const auto& n : lookup::list_tables(d / "out" / "microfacet_albedo.h5")) names.insert(n);

@@ -32,7 +32,7 @@ TEST_CASE("the README manifest example generates its table") {
   fs::create_directories(dir);
   std::ofstream(dir / "manifest.json") << manifest;
   const auto r = brdftab::testing::run_cli("generate --quiet --manifest '" + (dir / "manifest.json").string() +
-                                           "' --out '" + dir.string() + "'");
+                                           "' --tables '" + dir.string() + "'");
   INFO(r.err);
   REQUIRE(r.status == 0);
   const auto t = brdftab::lookup::load_table(dir / "demo.h5", "demo_exp_cos");

@@ -124,7 +124,7 @@ TEST_CASE("generate: a full or read-only disk (tmpfs) ends with a message, exit 
     return;
   }
   const std::string manifest = std::string(BRDFTAB_SOURCE_DIR) + "/tables/default.json";
-  auto r = testing::run_cli("generate --manifest '" + manifest + "' --only hfunc -q --out '" + dir.string() + "'");
+  auto r = testing::run_cli("generate --manifest '" + manifest + "' --only hfunc -q --tables '" + dir.string() + "'");
   const auto left = entries(dir);
   ::umount(dir.c_str());
   CHECK(r.status == 1);
@@ -133,7 +133,7 @@ TEST_CASE("generate: a full or read-only disk (tmpfs) ends with a message, exit 
 
   REQUIRE(mount_tmpfs(dir, "size=1m"));
   ::mount(nullptr, dir.c_str(), nullptr, MS_REMOUNT | MS_RDONLY, nullptr);
-  r = testing::run_cli("generate --manifest '" + manifest + "' --only demo -q --out '" + dir.string() + "'");
+  r = testing::run_cli("generate --manifest '" + manifest + "' --only demo -q --tables '" + dir.string() + "'");
   const auto left_ro = entries(dir);
   ::umount(dir.c_str());
   CHECK(r.status == 1);

@@ -44,7 +44,7 @@ std::string scene(const std::string& materials, const std::string& extra = "") {
 // plan --scene on `text`: status and stderr.
 testing::CliResult plan(const fs::path& d, const std::string& text) {
   std::ofstream(d / "s.json") << text;
-  return run_cli("plan --scene '" + (d / "s.json").string() + "' --out '" + (d / "out").string() + "'");
+  return run_cli("plan --scene '" + (d / "s.json").string() + "' --tables '" + (d / "out").string() + "'");
 }
 
 }  // namespace
@@ -82,7 +82,7 @@ TEST_CASE("scene composite models: bad keys exit 2 naming material, key, value a
   }
   // generate writes nothing for a bad scene
   std::ofstream(d / "bad.json") << scene(cases[0].material);
-  const auto r = run_cli("generate -q --scene '" + (d / "bad.json").string() + "' --out '" + (d / "gen").string() + "'");
+  const auto r = run_cli("generate -q --scene '" + (d / "bad.json").string() + "' --tables '" + (d / "gen").string() + "'");
   CHECK(r.status == 2);
   CHECK(!fs::exists(d / "gen" / "hp.h5"));
 }
@@ -107,12 +107,12 @@ TEST_CASE("scene composite models: generate, check, and the runtime serves each 
   const fs::path d = scratch_dir("scene_composite_gen");
   std::ofstream(d / "s.json") << scene(std::string(kHaze) + "," + kVarnish);
   const std::string out = (d / "out").string();
-  auto r = run_cli("generate -q --scene '" + (d / "s.json").string() + "' --out '" + out + "'");
+  auto r = run_cli("generate -q --scene '" + (d / "s.json").string() + "' --tables '" + out + "'");
   REQUIRE_MESSAGE(r.status == 0, r.err);
   std::set<std::string> files;
   for (const auto& e : fs::directory_iterator(out)) files.insert(e.path().filename().string());
   CHECK(files == std::set<std::string>{"hazy_gloss.h5", "hp.h5", "scene.index"});
-  r = run_cli("check '" + out + "' --scene '" + (d / "s.json").string() + "'");
+  r = run_cli("check --tables '" + out + "' --scene '" + (d / "s.json").string() + "'");
   CHECK_MESSAGE(r.status == 0, (r.out + r.err));
   CHECK(contains(r.out, "all up to date"));
 

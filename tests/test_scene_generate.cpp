@@ -37,7 +37,7 @@ TEST_CASE("generate --scene: the tables the scene needs, incremental, check, byt
   const fs::path d = brdftab::testing::scratch_dir("scene_gen");
   std::ofstream(d / "scene.json") << kScene;
   const std::string out1 = (d / "out1").string(), out2 = (d / "out2").string();
-  auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + out1 + "'");
+  auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --tables '" + out1 + "'");
   REQUIRE_MESSAGE(r.status == 0, r.err);
   // exactly: smith_gbeckmann.h5, ghs_sigma_rel.h5 and microfacet_albedo.h5 (slices) and the
   // index; no fresnel tables
@@ -48,21 +48,21 @@ TEST_CASE("generate --scene: the tables the scene needs, incremental, check, byt
   CHECK(names == std::vector<std::string>{"smith_gbeckmann_g1_material_gold", "smith_gbeckmann_g1_material_paint"});
 
   // check: up to date
-  r = run_cli("check '" + out1 + "' --scene '" + (d / "scene.json").string() + "'");
+  r = run_cli("check --tables '" + out1 + "' --scene '" + (d / "scene.json").string() + "'");
   CHECK_MESSAGE(r.status == 0, (r.out + r.err));
   CHECK(contains(r.out, "all up to date"));
 
   // second generate: no table work, files untouched
   const auto t_before = fs::last_write_time(fs::path(out1) / "ghs_sigma_rel.h5");
   const std::string bytes_before = brdftab::testing::slurp(fs::path(out1) / "ghs_sigma_rel.h5");
-  r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + out1 + "'");
+  r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --tables '" + out1 + "'");
   REQUIRE(r.status == 0);
   CHECK(contains(r.out, "0 tables in"));
   CHECK(contains(r.out, "up to date, skipped: smith_gbeckmann.h5 ghs_sigma_rel.h5"));
   CHECK(fs::last_write_time(fs::path(out1) / "ghs_sigma_rel.h5") == t_before);
 
   // reproducible: another folder, byte for byte (--rebuild: the same work again)
-  r = run_cli("generate -q --rebuild --scene '" + (d / "scene.json").string() + "' --out '" + out2 + "'");
+  r = run_cli("generate -q --rebuild --scene '" + (d / "scene.json").string() + "' --tables '" + out2 + "'");
   REQUIRE(r.status == 0);
   for (const char* f : {"ghs_sigma_rel.h5", "smith_gbeckmann.h5", "microfacet_albedo.h5", "scene.index"}) {
     INFO(f);
@@ -74,22 +74,22 @@ TEST_CASE("generate --scene: the tables the scene needs, incremental, check, byt
   std::string changed = kScene;
   changed.replace(changed.find("\"p\": 1.7"), 8, "\"p\": 1.9");
   std::ofstream(d / "changed.json") << changed;
-  r = run_cli("check '" + out1 + "' --scene '" + (d / "changed.json").string() + "'");
+  r = run_cli("check --tables '" + out1 + "' --scene '" + (d / "changed.json").string() + "'");
   CHECK(r.status == 1);
   CHECK(contains(r.out, "smith_gbeckmann.h5: stale"));
   CHECK(contains(r.out, "ghs_sigma_rel.h5: up to date"));
   CHECK(contains(r.out, "scene.index: stale"));
-  r = run_cli("plan --scene '" + (d / "changed.json").string() + "' --out '" + out1 + "'");
+  r = run_cli("plan --scene '" + (d / "changed.json").string() + "' --tables '" + out1 + "'");
   CHECK(r.status == 0);
   CHECK(contains(r.out, "smith_gbeckmann_g1_material_gold"));
   CHECK(contains(r.out, "2 of 3 files up to date"));
-  r = run_cli("generate -q --scene '" + (d / "changed.json").string() + "' --out '" + out1 + "'");
+  r = run_cli("generate -q --scene '" + (d / "changed.json").string() + "' --tables '" + out1 + "'");
   REQUIRE(r.status == 0);
   CHECK(contains(r.out, "2 tables in"));  // the two G1 slices only
   CHECK(contains(r.out, "skipped: ghs_sigma_rel.h5"));
   // a missing file
   fs::remove(fs::path(out1) / "ghs_sigma_rel.h5");
-  r = run_cli("check '" + out1 + "' --scene '" + (d / "changed.json").string() + "'");
+  r = run_cli("check --tables '" + out1 + "' --scene '" + (d / "changed.json").string() + "'");
   CHECK(r.status == 1);
   CHECK(contains(r.out, "ghs_sigma_rel.h5: missing"));
   fs::remove_all(d);
@@ -98,22 +98,22 @@ TEST_CASE("generate --scene: the tables the scene needs, incremental, check, byt
 TEST_CASE("generate --scene: bad input exits 2 and writes nothing") {
   const fs::path d = brdftab::testing::scratch_dir("scene_bad");
   std::ofstream(d / "bad.json") << R"({"materials": [{"name": "gold", "model": "ghs", "p": 1, "beta": 0.2, "B": -3, "c": 2}]})";
-  auto r = run_cli("generate -q --scene '" + (d / "bad.json").string() + "' --out '" + (d / "out").string() + "'");
+  auto r = run_cli("generate -q --scene '" + (d / "bad.json").string() + "' --tables '" + (d / "out").string() + "'");
   CHECK(r.status == 2);
   CHECK(contains(r.err, "'gold'"));
   CHECK(contains(r.err, "'B' = -3"));
   CHECK(contains(r.err, "[1e-08, 1e+08]"));
   CHECK_FALSE(fs::exists(d / "out"));
-  r = run_cli("generate -q --scene '" + (d / "missing.json").string() + "' --out '" + (d / "out").string() + "'");
+  r = run_cli("generate -q --scene '" + (d / "missing.json").string() + "' --tables '" + (d / "out").string() + "'");
   CHECK(r.status == 2);
   CHECK(contains(r.err, "cannot open"));
   CHECK_FALSE(fs::exists(d / "out"));
-  // --scene without --out: refused (it would overwrite the default tables)
+  // --scene without --tables: refused (it would overwrite the default tables)
   std::ofstream(d / "ok.json") << kScene;
   r = run_cli("generate -q --scene '" + (d / "ok.json").string() + "'");
   CHECK(r.status == 2);
-  CHECK(contains(r.err, "--out"));
-  r = run_cli("check '" + d.string() + "' --scene '" + (d / "bad.json").string() + "'");
+  CHECK(contains(r.err, "--tables"));
+  r = run_cli("check --tables '" + d.string() + "' --scene '" + (d / "bad.json").string() + "'");
   CHECK(r.status == 2);
   fs::remove_all(d);
 }
@@ -121,7 +121,7 @@ TEST_CASE("generate --scene: bad input exits 2 and writes nothing") {
 TEST_CASE("generate --manifest: content keys make a second run skip, byte-identical on rebuild") {
   const fs::path d = brdftab::testing::scratch_dir("manifest_incr");
   std::ofstream(d / "m.json") << R"({"tables": {"demo": {"x_points": 9, "y_step": 0.2}}})";
-  const std::string args = "generate -q --manifest '" + (d / "m.json").string() + "' --out '" + (d / "out").string() + "'";
+  const std::string args = "generate -q --manifest '" + (d / "m.json").string() + "' --tables '" + (d / "out").string() + "'";
   REQUIRE(run_cli(args).status == 0);
   const std::string first = brdftab::testing::slurp(d / "out" / "demo.h5");
   auto r = run_cli(args);
@@ -132,7 +132,7 @@ TEST_CASE("generate --manifest: content keys make a second run skip, byte-identi
   const auto attrs = lookup::file_attributes(d / "out" / "demo.h5");
   CHECK(attrs.count("content_key") == 1);
   CHECK(attrs.count("created_utc") == 0);  // only with SOURCE_DATE_EPOCH
-  r = run_cli("check '" + (d / "out").string() + "' --manifest '" + (d / "m.json").string() + "'");
+  r = run_cli("check --tables '" + (d / "out").string() + "' --manifest '" + (d / "m.json").string() + "'");
   CHECK(r.status == 0);
   fs::remove_all(d);
 }
@@ -140,7 +140,7 @@ TEST_CASE("generate --manifest: content keys make a second run skip, byte-identi
 TEST_CASE("SceneSet: lazy, one handle per material, values agree with the exact numerics") {
   const fs::path d = brdftab::testing::scratch_dir("scene_runtime");
   std::ofstream(d / "scene.json") << kScene;
-  REQUIRE(run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + (d / "out").string() + "'").status == 0);
+  REQUIRE(run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --tables '" + (d / "out").string() + "'").status == 0);
   lookup::SceneSet scene(d / "out");
   CHECK(scene.material_names() == std::vector<std::string>{"copper", "gold", "paint"});
   CHECK(scene.loaded_tables() == 0);
@@ -170,7 +170,7 @@ TEST_CASE("SceneSet: an LS material's slices satisfy k_d = 2 int A mu dmu and ma
   const fs::path d = brdftab::testing::scratch_dir("scene_ls");
   std::ofstream(d / "scene.json") << R"({"materials": [{"name": "milk", "model": "ls", "c": 0.9}],
                                          "families": {"ls": {"form": "slices", "brdf": false}, "hfunc": {"form": "slices"}}})";
-  auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --out '" + (d / "out").string() + "'");
+  auto r = run_cli("generate -q --scene '" + (d / "scene.json").string() + "' --tables '" + (d / "out").string() + "'");
   REQUIRE_MESSAGE(r.status == 0, r.err);
   lookup::SceneSet scene(d / "out");
   const auto& milk = scene.material("milk");

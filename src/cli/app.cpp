@@ -29,6 +29,27 @@ std::filesystem::path default_tables_dir() {
   return "tables";
 }
 
+// The deprecated spelling of a subcommand's `--tables DIR` (`--out DIR`, or for `check` a
+// positional DIR): hidden from --help, exclusive with `--tables`. apply() moves its value
+// into the `--tables` value, with a warning.
+struct DeprecatedFolder {
+  std::filesystem::path* target;
+  std::filesystem::path value{};
+  CLI::Option* option = nullptr;
+  std::string spelling{};
+  void add(CLI::App* sub, const std::string& name, CLI::Option* current) {
+    spelling = name;
+    option = sub->add_option(name, value)->group("")->excludes(current);
+  }
+  void apply(std::ostream& err) const {
+    if (option->count() == 0) return;
+    err << "brdftab: warning: "
+        << (option->get_positional() ? std::string("a positional table folder") : "option " + spelling)
+        << " is deprecated, use --tables DIR\n";
+    *target = value;
+  }
+};
+
 int run_main(int argc, char** argv) {
   CLI::App app{"brdftab: exact numerics and HDF5 lookup tables for BRDF models"};
   app.require_subcommand(1);
@@ -39,7 +60,9 @@ int run_main(int argc, char** argv) {
   auto* g_manifest = g->add_option("--manifest", gen.manifest, "manifest JSON file")->check(CLI::ExistingFile);
   g->add_option("--scene", gen.scene, "scene JSON file: generate only what its materials need (docs/scenes.md)")
       ->excludes(g_manifest);
-  auto* g_out = g->add_option("--out", gen.out_dir, "output folder (default: the table folder; required with --scene)");
+  auto* g_out = g->add_option("--tables", gen.out_dir, "table folder to write (default: tables; required with --scene)");
+  DeprecatedFolder g_old{&gen.out_dir};
+  g_old.add(g, "--out", g_out);
   g->add_flag("--rebuild", gen.rebuild, "rebuild every file, also those whose content key is up to date");
   g->add_option("--only", gen.only, "generate only these families")->expected(1, -1);
   g->add_option("--threads", gen.threads, "OpenMP threads, 1-1024 (default: all cores)")->check(CLI::Range(1, 1024));
@@ -102,11 +125,15 @@ int run_main(int argc, char** argv) {
   auto* p = app.add_subcommand("plan", "what generate would build (tables, shapes, bytes, seconds, error) and what is up to date");
   auto* p_manifest = p->add_option("--manifest", pl.manifest, "manifest JSON file")->check(CLI::ExistingFile);
   p->add_option("--scene", pl.scene, "scene JSON file")->excludes(p_manifest);
-  p->add_option("--out", pl.out_dir, "also report which files in this folder are up to date");
+  auto* p_out = p->add_option("--tables", pl.out_dir, "also report which files in this table folder are up to date");
+  DeprecatedFolder p_old{&pl.out_dir};
+  p_old.add(p, "--out", p_out);
 
   CheckOptions ck;
   auto* c = app.add_subcommand("check", "exit 1 if a file the scene or manifest needs is missing or stale in DIR");
-  c->add_option("dir", ck.dir, "table folder")->required();
+  auto* c_dir = c->add_option("--tables", ck.dir, "table folder to check (default: tables)");
+  DeprecatedFolder c_old{&ck.dir};
+  c_old.add(c, "dir", c_dir);
   auto* c_manifest = c->add_option("--manifest", ck.manifest, "manifest JSON file")->check(CLI::ExistingFile);
   c->add_option("--scene", ck.scene, "scene JSON file")->excludes(c_manifest);
 
@@ -138,10 +165,12 @@ int run_main(int argc, char** argv) {
   if (va.tables_dir.empty()) va.tables_dir = default_tables_dir();
   if (be.tables_dir.empty()) be.tables_dir = default_tables_dir();
   if (va.report_dir.empty()) va.report_dir = "report";
+  for (const auto* d : {&g_old, &p_old, &c_old}) d->apply(std::cerr);
   if (gen.out_dir.empty()) gen.out_dir = "tables";
+  if (ck.dir.empty()) ck.dir = "tables";
 
   if (g->parsed()) {
-    gen.out_given = g_out->count() > 0;
+    gen.out_given = g_out->count() > 0 || g_old.option->count() > 0;
     return run_generate(gen, std::cout, std::cerr);
   }
   if (p->parsed()) return run_plan(pl, std::cout, std::cerr);

@@ -1,4 +1,4 @@
-// `brdftab check DIR (--scene F | --manifest F)`: is every file the scene or manifest needs in
+// `brdftab check [--tables DIR] (--scene F | --manifest F)`: is every file the scene or manifest needs in
 // DIR and up to date? Exit 0 yes, 1 no (missing, stale or unreadable), 2 bad input.
 #include <ostream>
 

@@ -42,6 +42,7 @@
 #include "cli/commands.hpp"
 #include "cli/csv.hpp"
 #include "cli/quantity.hpp"
+#include "cli/deprecation.hpp"
 #include "lookup/number_format.hpp"
 #include "lookup/table_set.hpp"
 
@@ -209,7 +210,7 @@ struct Chunk {
 }  // namespace
 
 int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
-  const Quantity* q = find_quantity(o.quantity);
+  const Quantity* q = find_quantity(current_name(names::Kind::quantity, o.quantity, err));
   if (!q) {
     std::vector<std::string> names;
     for (const auto& x : all_quantities()) names.push_back(x.name);
@@ -250,7 +251,8 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
     err << what << ": empty input; expected a CSV header naming the columns " << list(param_names) << "\n";
     return 2;
   }
-  const auto header = split_csv_line(line);
+  auto header = split_csv_line(line);
+  for (auto& h : header) h = current_name(names::Kind::column, h, err);
   const std::size_t ncol = header.size(), np = q->parameters.size();
   std::unordered_map<std::string_view, std::size_t> column_by_name;
   column_by_name.reserve(ncol);

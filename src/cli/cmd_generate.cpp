@@ -1,4 +1,4 @@
-// `brdftab generate [--manifest FILE | --scene FILE] [--out DIR] [--only NAME...] [--threads N]
+// `brdftab generate [--manifest FILE | --scene FILE] [--tables DIR] [--only NAME...] [--threads N]
 //                   [--quiet] [--rebuild] [--force]`
 // Incremental: a file whose stored content key matches its entry is skipped (docs/scenes.md).
 #include <omp.h>
@@ -42,7 +42,7 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
     return 2;
   }
   if (!o.scene.empty() && !o.out_given) {
-    err << "brdftab generate: --scene needs --out DIR (a scene's tables never go to the default table folder)\n";
+    err << "brdftab generate: --scene needs --tables DIR (a scene's tables never go to the default table folder)\n";
     return 2;
   }
   const auto src = load_jobs("generate", o.manifest, o.scene, o.only, err);

@@ -1,4 +1,4 @@
-// `brdftab plan (--scene F | --manifest F) [--out DIR]`: what generate would do, without
+// `brdftab plan (--scene F | --manifest F) [--tables DIR]`: what generate would do, without
 // computing a value (dry run: shapes and bytes exact, seconds estimated).
 #include <cmath>
 #include <cstdio>

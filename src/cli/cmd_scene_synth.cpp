@@ -35,7 +35,7 @@ int run_scene_synth(const SynthOptions& o, std::ostream& out, std::ostream& err)
   for (int i = 0; i < o.materials; ++i) {
     const std::string& model = models[static_cast<std::size_t>(i) % models.size()];
     nlohmann::json m = {{"name", model + "_" + std::to_string(i)}, {"model", model}};
-    if (model == "ghs" || model == "generalized_beckmann") {
+    if (model == "ghs" || model == "gbeckmann") {
       m["p"] = round4(u(0.5, 3.0));
       m["beta"] = round4(u(0.05, 0.5));
       if (model == "ghs") {

@@ -16,7 +16,7 @@ struct GenerateOptions {
   std::filesystem::path manifest;  // empty: tables/default.json of the source tree, else built-in defaults
   std::filesystem::path scene;     // a scene file instead of a manifest (docs/scenes.md)
   std::filesystem::path out_dir;
-  bool out_given = false;          // --scene requires an explicit --out
+  bool out_given = false;          // --scene requires an explicit --tables
   std::vector<std::string> only;
   int threads = 0;
   bool quiet = false;
@@ -25,13 +25,13 @@ struct GenerateOptions {
 int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err);
 
 // `brdftab plan`: what generate would build (tables, shapes, bytes, estimated seconds,
-// expected error) and, with --out, what in that folder is already up to date.
+// expected error) and, with --tables, what in that folder is already up to date.
 struct PlanOptions {
   std::filesystem::path manifest, scene, out_dir;
 };
 int run_plan(const PlanOptions& o, std::ostream& out, std::ostream& err);
 
-// `brdftab check DIR`: exit 0 if every file the manifest/scene needs is in DIR and up to
+// `brdftab check --tables DIR`: exit 0 if every file the manifest/scene needs is in DIR and up to
 // date, 1 if one is missing, stale or unreadable, 2 on bad input.
 struct CheckOptions {
   std::filesystem::path dir, manifest, scene;

@@ -79,7 +79,7 @@ std::vector<Quantity> quantities() {
   kd.name = "ls_kd";
   kd.description = "spherical (bond) albedo k_d(c) = 2 int A(c, mu) mu dmu of the Lambertian-sphere half space";
   kd.parameters = {c_param()};
-  kd.outputs = {"kd"};
+  kd.outputs = {"k_d"};
   kd.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
     out[0] = albedo_solver(in[0]).spherical();
   };
@@ -96,7 +96,7 @@ std::vector<Quantity> quantities() {
   Quantity c;
   c.name = "ls_c";
   c.description = "particle albedo c(k_d) that gives the spherical albedo k_d (inverse of ls_kd)";
-  c.parameters = {{"kd", 0.0, 1.0, false, false, false, "[0, 1]"}};
+  c.parameters = {{"k_d", 0.0, 1.0, false, false, false, "[0, 1]"}};
   c.outputs = {"c"};
   c.methods["exact"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
     out[0] = numerics::ls_c_from_kd(in[0]);

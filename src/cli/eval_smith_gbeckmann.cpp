@@ -1,4 +1,4 @@
-// `brdftab eval smith_gb`: Smith Lambda and G1 of the generalized Beckmann distribution
+// `brdftab eval smith_gbeckmann`: Smith Lambda and G1 of the generalized Beckmann distribution
 // (Holzschuch & Pacanowski, Sec. 4.2, Eq. 41-42). Columns p, a -> Lambda, G1.
 //   exact: single-integral Lambda (numerics/smith_gbeckmann_lambda.hpp), p in [0.1, 10];
 //          G1 = 1 / (1 + Lambda) from the same Lambda (one integral per row).
@@ -19,7 +19,7 @@ namespace brdftab::cli::smith_gbeckmann {
 
 std::vector<Quantity> quantities() {
   Quantity q;
-  q.name = "smith_gb";
+  q.name = "smith_gbeckmann";
   q.description =
       "Smith Lambda and G1 = 1/(1+Lambda) of the generalized Beckmann NDF, a = beta tan(theta) "
       "(Holzschuch & Pacanowski Eq. 41-42)";

@@ -180,7 +180,7 @@ SceneMaterialHandle::SceneMaterialHandle(const SceneSet::Entry& e, TableSet& tab
         schema::check_table(t.table, t.info.attribute_string("quantity"),
                             m.albedo_slice ? schema::ls::kAlbedoMaterial : schema::ls::kAlbedo);
         if (m.albedo_slice) m.c = t.info.attribute_number("ls_c", NAN), m.kd_value = t.info.attribute_number("ls_kd", NAN);
-      } else if (role == "kd") {
+      } else if (role == "k_d" || role == "kd") {
         LsKdTable check(t.table);
         m.kd = &t;
       } else if (role == "H0" || role == "H1" || role == "H2") {
@@ -319,7 +319,7 @@ double SceneMaterialHandle::ls_c() const {
 }
 
 double SceneMaterialHandle::ls_kd() const {
-  if (std::isnan(impl_->kd_value)) missing(e_, "kd");
+  if (std::isnan(impl_->kd_value)) missing(e_, "k_d");
   return impl_->kd_value;
 }
 

@@ -66,7 +66,7 @@ class SceneMaterialHandle {
   bool has(const std::string& role) const;     // a table or scalar for this role
   std::size_t table_count() const { return e_.tables.size(); }
 
-  // Generalized Beckmann lobe (ghs, generalized_beckmann): Smith G1(a), a = beta tan(theta).
+  // Generalized Beckmann lobe (ghs, gbeckmann): Smith G1(a), a = beta tan(theta).
   double g1(double a) const;
   // GHS diffraction renormalization sigma_rel^2(s), s = sin(theta_i) (ghs).
   double sigma_rel2(double s) const;
@@ -90,7 +90,7 @@ class SceneMaterialHandle {
   // filip "filip_brdf", "filip_albedo", "filip_marginal_cdf", "filip_conditional_cdf".
   // Evaluate them with the family's lookup helpers (lookup/hazy_gloss.hpp, hp.hpp, filip.hpp).
   const Table& table(const std::string& role) const;
-  // Microfacet lobe with F = 1 (ggx, beckmann: alpha; generalized_beckmann: p, beta):
+  // Microfacet lobe with F = 1 (ggx, beckmann: alpha; gbeckmann: p, beta):
   // E_corr, E_sep and the split-sum pair at mu, from the material's 1-D slices or the grids;
   // E_avg from the index's exact scalars or the grids' E_avg tables.
   MicrofacetAlbedoValues microfacet_albedo(double mu) const;

@@ -138,7 +138,7 @@ double ls_kd(double c) {
 }
 
 double ls_c_from_kd(double kd) {
-  require_closed("kd", kd, 0.0, 1.0, "[0, 1]");
+  require_closed("k_d", kd, 0.0, 1.0, "[0, 1]");
   if (kd == 0) return 0;
   if (kd == 1) return 1;
   // k_d decreases from 1 (s = 0) to 0 (s = 1) with s = sqrt(1 - c): near c = 1 the

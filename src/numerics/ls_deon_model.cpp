@@ -95,7 +95,7 @@ double deon_fast_brdf(double c, double mu_i, double mu_o, double phi) {
 }
 
 double deon_c_from_kd(double kd) {
-  require_closed("kd", kd, 0.0, 1.0, "[0, 1]");
+  require_closed("k_d", kd, 0.0, 1.0, "[0, 1]");
   // Eq. 46
   return (1.0 - std::pow(1.0 - kd, 2.73556)) / (1.0 - 0.184096 * std::pow(1.0 - kd, 2.48423));
 }
