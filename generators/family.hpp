@@ -15,7 +15,7 @@
 // docs/adding-a-family.md "Scene hook"):
 //   std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>&, const CostPolicy&);
 // and its schema in src/lookup/K_schema.hpp (namespace brdftab::schema::K, kFile, kDatasets).
-// generators/family_list.hpp lists the families; generators/registry.cpp instantiates them.
+// lookup/family_list.hpp lists the families; generators/registry.cpp instantiates them.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -198,7 +198,7 @@ class FamilyOf final : public Family {
   FamilyParts<Config> p_;
 };
 
-// All families compiled in, in the order of generators/family_list.hpp.
+// All families compiled in, in the order of lookup/family_list.hpp.
 const std::vector<std::unique_ptr<Family>>& all_families();
 const Family* find_family(const std::string& name);
 

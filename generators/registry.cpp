@@ -1,9 +1,9 @@
-// Every table family compiled into brdftab, from generators/family_list.hpp.
+// Every table family compiled into brdftab, from lookup/family_list.hpp.
 #include <memory>
 #include <vector>
 
 #include "generators/family.hpp"
-#include "generators/family_list.hpp"
+#include "lookup/family_list.hpp"
 
 namespace brdftab::gen {
 

@@ -1,4 +1,4 @@
-// Every family of generators/family_list.hpp has all its parts and keeps the shared
+// Every family of lookup/family_list.hpp has all its parts and keeps the shared
 // promises (docs/adding-a-family.md): a valid default entry that tables/default.json holds,
 // an eval quantity with exact and table methods, narrower ranges giving smaller tables, a
 // stored error that a fresh random point set does not exceed (within a sampling margin),

@@ -1,6 +1,6 @@
 // Every benchmark group of `brdftab bench`: the lookup library's own, then one per family
-// of generators/family_list.hpp.
-#include "generators/family_list.hpp"
+// of lookup/family_list.hpp.
+#include "lookup/family_list.hpp"
 #include "validate/bench.hpp"
 
 namespace brdftab::validate {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -65,6 +66,63 @@ void open_or_throw(std::ofstream& f, const std::filesystem::path& p) {
 
 }  // namespace
 
+namespace {
+// Where each row's label goes: the first of eight offsets around its point (right, left,
+// above, below and the diagonals, in character units) whose box overlaps no label placed
+// before and no other point, in the plot's log-log coordinates (scaled to the canvas,
+// ~110 x 45 characters). Rows without an error (references) have a label of their own.
+struct LabelPlacement {
+  std::size_t row;
+  double dx, dy;
+};
+std::vector<LabelPlacement> place_labels(const std::vector<Point>& rows) {
+  double ex0 = HUGE_VAL, ex1 = -HUGE_VAL, ty0 = HUGE_VAL, ty1 = -HUGE_VAL;
+  for (const Point& p : rows) {
+    if (!p.max_error || !(*p.max_error > 0) || !(p.ns_per_value > 0)) continue;
+    ex0 = std::min(ex0, std::log10(*p.max_error)), ex1 = std::max(ex1, std::log10(*p.max_error));
+    ty0 = std::min(ty0, std::log10(p.ns_per_value)), ty1 = std::max(ty1, std::log10(p.ns_per_value));
+  }
+  const double cols = 110 / std::max(ex1 - ex0, 1e-9), lines = 45 / std::max(ty1 - ty0 + std::log10(3.0), 1e-9);
+  struct Box {
+    double x0, x1, y0, y1;
+  };
+  std::vector<Box> taken;
+  std::vector<std::pair<double, double>> points;  // in characters
+  for (const Point& p : rows)
+    if (p.max_error && *p.max_error > 0 && p.ns_per_value > 0)
+      points.push_back({(std::log10(*p.max_error) - ex0) * cols, (std::log10(p.ns_per_value) - ty0) * lines});
+  const std::pair<double, double> offsets[] = {{1, 0.3}, {-1, 0.3}, {1, -1.1}, {-1, -1.1},
+                                               {0.5, 1.2}, {-0.5, 1.2}, {0.5, -2.0}, {-0.5, -2.0}};
+  std::vector<LabelPlacement> out;
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Point& p = rows[i];
+    if (!p.max_error || !(*p.max_error > 0) || !(p.ns_per_value > 0)) continue;
+    const auto [x, y] = points[j++];
+    const double w = 0.8 * static_cast<double>(p.variant.size()) + 0.5, h = 1.0;
+    Box best{};
+    std::pair<double, double> chosen = offsets[0];
+    for (const auto& [dx, dy] : offsets) {
+      const Box b = dx > 0 ? Box{x + dx, x + dx + w, y + dy, y + dy + h} : Box{x + dx - w, x + dx, y + dy, y + dy + h};
+      const bool clear =
+          std::none_of(taken.begin(), taken.end(),
+                       [&](const Box& t) { return b.x0 < t.x1 && t.x0 < b.x1 && b.y0 < t.y1 && t.y0 < b.y1; }) &&
+          std::none_of(points.begin(), points.end(), [&](const auto& q) {
+            return q.first > b.x0 - 0.5 && q.first < b.x1 + 0.5 && q.second > b.y0 - 0.3 && q.second < b.y1 + 0.3;
+          });
+      if (clear) {
+        best = b, chosen = {dx, dy};
+        break;
+      }
+      if (&dx == &offsets[0].first) best = b;  // none is clear: keep the first
+    }
+    taken.push_back(best);
+    out.push_back({i, chosen.first, chosen.second});
+  }
+  return out;
+}
+}  // namespace
+
 void write_quantity(const std::filesystem::path& dir, const Quantity& q) {
   const std::vector<bool> front = pareto_front(q.rows);
   const std::string stem = "pareto_" + q.key;
@@ -84,10 +142,10 @@ void write_quantity(const std::filesystem::path& dir, const Quantity& q) {
   }
   std::ofstream g;
   open_or_throw(g, dir / (stem + ".gp"));
-  g << "# " << q.title << ": `gnuplot " << stem << ".gp` writes " << stem << ".svg (data as in " << stem
-    << ".csv)\n"
-    << "set terminal svg size 1000,640 dynamic noenhanced\n"
-    << "set output " << gp_string(stem + ".svg") << "\n"
+  g << "# " << q.title << ": `gnuplot " << stem << ".gp` writes " << stem << ".png (data as in " << stem
+    << ".csv; bench --pareto runs it)\n"
+    << "set terminal pngcairo size 1200,760 noenhanced\n"
+    << "set output " << gp_string(stem + ".png") << "\n"
     << "set title \"" << q.title << "\\nCPU time per value (one thread) against " << q.error_kind << " at "
     << q.points << " points\""
     << "\nset logscale xy\nset format x '%.0e'\nset grid\nset key outside right top\n"
@@ -118,18 +176,26 @@ void write_quantity(const std::filesystem::path& dir, const Quantity& q) {
   g << "EOD\n";
   for (std::size_t k = 0; k < order.size(); ++k) {
     g << "$g" << k << " << EOD\n";
-    for (std::size_t i : groups[order[k]])
-      g << num(*q.rows[i].max_error) << ' ' << num(q.rows[i].ns_per_value) << " \"" << q.rows[i].variant << "\"\n";
+    for (std::size_t i : groups[order[k]]) g << num(*q.rows[i].max_error) << ' ' << num(q.rows[i].ns_per_value) << "\n";
     g << "EOD\n";
   }
+  for (const LabelPlacement& l : place_labels(q.rows))
+    g << "set label " << gp_string(q.rows[l.row].variant) << " at first " << num(*q.rows[l.row].max_error) << ", first "
+      << num(q.rows[l.row].ns_per_value) << " offset char " << l.dx << ", char " << l.dy << " font ',8'"
+      << (l.dx < 0 ? " right" : " left") << "\n";
   g << "plot $front using 1:2 with steps linewidth 2 linecolor rgb 'gray' title 'Pareto front'";
   for (std::size_t k = 0; k < order.size(); ++k)
     g << ", \\\n     $g" << k << " using 1:2 with points pointtype " << 1 + k % 14 << " linecolor " << 1 + k
-      << " pointsize 1.2 title "
-      << gp_string(order[k]) << ", \\\n     $g" << k
-      << " using 1:2:3 with labels offset char 0.8, char 0.5 font ',8' notitle";
+      << " pointsize 1.2 title " << gp_string(order[k]);
   g << "\n";
   if (!g.flush()) throw std::runtime_error("cannot write " + (dir / (stem + ".gp")).string());
+  g.close();
+  // The PNG (gnuplot is one of the Debian packages scripts/install-deps.sh installs; if it is
+  // missing the script stays, with a note).
+  const std::string cmd = "cd '" + dir.string() + "' && gnuplot '" + stem + ".gp' 2>&1";
+  if (std::system(cmd.c_str()) != 0)
+    std::fprintf(stderr, "brdftab bench --pareto: gnuplot failed or is missing; %s.png not made (script kept)\n",
+                 stem.c_str());
 }
 
 namespace {

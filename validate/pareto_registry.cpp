@@ -1,19 +1,9 @@
-// The families that contribute quantities to `brdftab bench --pareto` (validate/pareto.hpp),
-// in the order they run: each defines validate::<family>::pareto_quantities in
-// validate/pareto_<family>.cpp. A family whose quantities have a single method adds none.
+// The families' `brdftab bench --pareto` rows (validate/pareto.hpp), in family-list order
+// (lookup/family_list.hpp): each family K defines validate::K::pareto_quantities in
+// validate/pareto_K.cpp; a family whose quantities have no method to trade against
+// another returns none.
+#include "lookup/family_list.hpp"
 #include "validate/pareto.hpp"
-
-#define BRDFTAB_PARETO_FAMILIES(X) \
-  X(hfunc)                         \
-  X(smith_gbeckmann)               \
-  X(ghs_sigma_rel)                 \
-  X(fresnel)                       \
-  X(ls)                            \
-  X(microfacet_albedo)              \
-  X(htsg)                           \
-  X(hazy_gloss)                     \
-  X(hp)                             \
-  X(filip)
 
 namespace brdftab::validate {
 
@@ -21,13 +11,13 @@ namespace brdftab::validate {
   namespace K {            \
   std::vector<pareto::Quantity> pareto_quantities(const pareto::Options& o); \
   }
-BRDFTAB_PARETO_FAMILIES(BRDFTAB_DECLARE)
+BRDFTAB_FAMILIES(BRDFTAB_DECLARE)
 #undef BRDFTAB_DECLARE
 
 const std::vector<pareto::Family>& pareto::all_families() {
   static const std::vector<Family> v = {
 #define BRDFTAB_ADD(K) {#K, &K::pareto_quantities},
-      BRDFTAB_PARETO_FAMILIES(BRDFTAB_ADD)
+      BRDFTAB_FAMILIES(BRDFTAB_ADD)
 #undef BRDFTAB_ADD
   };
   return v;

@@ -1,5 +1,5 @@
 // Every validation section of `brdftab validate`, in family-list order.
-#include "generators/family_list.hpp"
+#include "lookup/family_list.hpp"
 #include "validate/report.hpp"
 
 namespace brdftab::validate {

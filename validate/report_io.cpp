@@ -1,5 +1,9 @@
 // CSV and gnuplot helpers for validation reports.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <string>
 #include <cstdlib>
 #include <iostream>
 
@@ -63,8 +67,28 @@ void plot_heatmap(const std::filesystem::path& png, const std::filesystem::path&
                   "\nset datafile separator ','\nset view map\nunset key\nset autoscale fix\n";
   s += "set title " + quote(title) + "\nset xlabel " + quote(xlabel) + "\nset ylabel " + quote(ylabel) +
        "\nset cblabel " + quote(cblabel) + "\n";
-  if (logcb) s += "set logscale cb\nset format cb '%.0e'\n";
-  s += "plot " + quote(csv.string()) + " using 1:2:3 every ::1 with image pixels\n";
+  // A log colour scale spans the data's positive range (read first), so neither end
+  // saturates whatever decades the errors span.
+  double lo = HUGE_VAL, hi = 0;
+  {
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+      const auto c2 = line.find(',', line.find(',') + 1);
+      if (c2 == std::string::npos) continue;
+      const double v = std::strtod(line.c_str() + c2 + 1, nullptr);
+      if (v > 0 && std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+  }
+  const bool log_scale = logcb;
+  std::string value = "3";
+  if (log_scale && hi > 0) {
+    // Zeros and negatives (exact nodes) drawn at the smallest positive value, not left blank.
+    s += "set logscale cb\nset format cb '%.0e'\nset cbrange [" + std::to_string(lo) + ":" + std::to_string(hi) + "]\n";
+    value = "($3 > 0 ? $3 : " + std::to_string(lo) + ")";
+  }
+  s += "plot " + quote(csv.string()) + " using 1:2:" + value + " every ::1 with image pixels\n";
   run_gnuplot(png, s);
 }
 

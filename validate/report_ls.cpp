@@ -1,6 +1,7 @@
 // `brdftab validate` section of the ls family: the committed albedo tables against the exact
 // true-medium solver at random off-grid c, d'Eon's albedo mappings Eq. 46-47 against the
 // exact mapping, and the energy (k_d) of the three-term model against the true medium.
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -66,10 +67,18 @@ void report(ReportContext& ctx) {
   }
   write_csv(ctx.report_dir / "ls_albedo_maps.csv", {"c", "kd_exact", "kd_eq47", "c_eq46_of_exact_kd", "kd_three_term", "kd_table"},
             rows);
+  // The errors of each k_d(c) against the exact medium, by c, on a log scale (a PNG figure).
+  std::vector<std::vector<double>> errors;
+  for (const auto& r : rows) errors.push_back({r[0], std::abs(r[2] - r[1]), std::abs(r[4] - r[1]), std::abs(r[5] - r[1])});
+  std::sort(errors.begin(), errors.end());
+  write_csv(ctx.report_dir / "ls_kd_errors.csv", {"c", "eq47_abs_error", "three_term_abs_error", "table_abs_error"}, errors);
+  plot_lines(ctx.report_dir / "ls_kd_errors.png", ctx.report_dir / "ls_kd_errors.csv", 1, {2, 3, 4},
+             "k_d(c): absolute error against the exact medium", "c", "absolute error", false, true);
   md << "Albedo mappings at 24 random c (uniform in sqrt(1 - c)), max absolute error against the exact true-medium "
         "mapping:\n\n| mapping | max abs error |\n|---|---|\n"
      << "| Eq. 47, c -> k_d | " << sci(e47) << " |\n| Eq. 46, k_d -> c | " << sci(e46) << " |\n"
-     << "| k_d of the exact three-term model (the medium d'Eon's model approximates) | " << sci(e3) << " |\n";
+     << "| k_d of the exact three-term model (the medium d'Eon's model approximates) | " << sci(e3) << " |\n"
+     << "\n![k_d errors by c](ls_kd_errors.png)\n\n";
   if (kd_table) {
     md << "| table ls_kd | " << sci(etab) << " |\n| table inverse c(k_d), k_d > 1e-3 | " << sci(etab_c) << " |\n";
     ctx.check_stated("ls_kd", etab, kd_table->info.attribute_number("max_abs_error", 0), "abs");

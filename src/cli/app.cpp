@@ -130,12 +130,16 @@ int run_main(int argc, char** argv) {
   p_old.add(p, "--out", p_out);
 
   CheckOptions ck;
-  auto* c = app.add_subcommand("check", "exit 1 if a file the scene or manifest needs is missing or stale in DIR");
+  auto* c = app.add_subcommand("check", "exit 1 if a file the scene or manifest needs is missing or stale in the table folder");
   auto* c_dir = c->add_option("--tables", ck.dir, "table folder to check (default: tables)");
   DeprecatedFolder c_old{&ck.dir};
   c_old.add(c, "dir", c_dir);
   auto* c_manifest = c->add_option("--manifest", ck.manifest, "manifest JSON file")->check(CLI::ExistingFile);
   c->add_option("--scene", ck.scene, "scene JSON file")->excludes(c_manifest);
+
+  bool quantities_markdown = false;
+  auto* qs = app.add_subcommand("quantities", "list every eval quantity: columns, domains, outputs, methods");
+  qs->add_flag("--markdown", quantities_markdown, "as the Markdown page docs/quantities.md");
 
   SynthOptions sy;
   auto* s = app.add_subcommand("scene-synth", "print a synthetic scene of N materials (JSON) for measurements");
@@ -176,6 +180,7 @@ int run_main(int argc, char** argv) {
   if (p->parsed()) return run_plan(pl, std::cout, std::cerr);
   if (c->parsed()) return run_check(ck, std::cout, std::cerr);
   if (s->parsed()) return run_scene_synth(sy, std::cout, std::cerr);
+  if (qs->parsed()) return run_quantities(quantities_markdown, std::cout);
   if (e->parsed()) return run_eval(ev, std::cin, std::cout, std::cerr);
   if (v->parsed()) return run_validate(va, std::cout, std::cerr);
   if (b->parsed()) {

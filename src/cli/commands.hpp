@@ -58,6 +58,8 @@ int run_info(const std::filesystem::path& file, std::ostream& out, std::ostream&
 // One Markdown table row per dataset of the files (file, dataset, shape, storage,
 // interpolation, size, measured errors), as in the README's accuracy table.
 int run_info_markdown(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err);
+// `brdftab quantities [--markdown]` (cmd_quantities.cpp): the eval quantity registry.
+int run_quantities(bool markdown, std::ostream& out);
 // `info --json`: every file and table as one JSON document (cmd_info_json.cpp).
 int run_info_json(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err);
 

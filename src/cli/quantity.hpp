@@ -80,7 +80,7 @@ std::string domain_problem(const Parameter& p, double v);
 const Quantity* find_quantity(const std::string& name);
 
 // All quantities (src/cli/quantity_registry.cpp): every family K of
-// generators/family_list.hpp contributes `std::vector<Quantity> cli::K::quantities()`
+// lookup/family_list.hpp contributes `std::vector<Quantity> cli::K::quantities()`
 // (src/cli/eval_K.cpp).
 const std::vector<Quantity>& all_quantities();
 

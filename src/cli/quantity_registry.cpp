@@ -1,8 +1,8 @@
-// Every quantity `brdftab eval` knows, from generators/family_list.hpp.
+// Every quantity `brdftab eval` knows, from lookup/family_list.hpp.
 #include <cmath>
 
 #include "cli/quantity.hpp"
-#include "generators/family_list.hpp"
+#include "lookup/family_list.hpp"
 
 namespace brdftab::cli {
 

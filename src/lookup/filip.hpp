@@ -3,11 +3,7 @@
 // tables/filip.h5 (schema in lookup/filip_schema.hpp; exact numerics in
 // numerics/filip_stencil_model.hpp, whose filip_brdf has the same arguments).
 //
-//   FilipBrdfTable f(tables.table("filip.h5", "filip_brdf_fabric"));
-//   double v = filip_brdf(f, theta_i, phi_i, theta_o, phi_o);
-//   FilipSampler s(tables.table("filip.h5", "filip_marginal_cdf_fabric"),
-//                  tables.table("filip.h5", "filip_conditional_cdf_fabric"));
-//   FilipSample d = s.sample(theta_i, phi_i, u0, u1, u2, u3);  // d.theta_o, d.phi_o, d.pdf (1/sr)
+// Example (built and run by CTest): docs/examples/family_helpers.cpp.
 //
 // The sampling density for one tabulated incident direction k is piecewise: strip s = [t_s,
 // t_s+1] in theta_o with probability P_s (marginal CDF), cell l = [p_l, p_l+1] in phi_o with

@@ -19,6 +19,8 @@
 //                              lower edges theta_lo = 0 .. theta_max - dtheta and phi in [0, 2 pi].
 // Each dataset carries the parameter set in the attribute `filip_parameters`
 // ("phi_a1=...,w1=...,..." in numerics::filip_param_info() order, shortest round-trip numbers).
+#include <array>
+
 #include "lookup/schema.hpp"
 
 namespace brdftab::schema::filip {
@@ -46,5 +48,11 @@ inline constexpr DatasetSchema kConditional{
     "D(theta_i, phi_i, theta_o_lo, phi_o): CDF in phi_o of f cos over a theta_o strip, material '", 4,
     {kThetaI, kPhiI, kThetaLo, kPhiO}};
 inline constexpr std::array kDatasets{kBrdf, kAlbedo, kMarginal, kConditional};
+
+// Dataset attributes of this family (see schema::AttributeRule): the material's parameter
+// set, "phi_a1=...,w1=...,..." (generators/filip.hpp).
+inline constexpr AttributeRule kAttributes[] = {
+    {"filip_parameters", AttributeKind::text, 0, 0, false},
+};
 
 }  // namespace brdftab::schema::filip

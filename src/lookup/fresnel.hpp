@@ -3,8 +3,7 @@
 // lookup/fresnel_schema.hpp). The exact values are numerics::fresnel_dr and
 // numerics::fresnel_avg_conductor; the functions here have the same names and arguments.
 //
-//   const brdftab::lookup::FresnelDrTable dr(tables.table("fresnel.h5", "fresnel_dr"));
-//   double f = fresnel_dr(dr, 1.5);
+// Example (built and run by CTest): docs/examples/family_helpers.cpp.
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>

@@ -31,6 +31,8 @@
 //                          n = 0.5), which k^(1/4) resolves.
 #include <algorithm>
 
+#include <array>
+
 #include "lookup/schema.hpp"
 
 namespace brdftab::schema::fresnel {
@@ -77,4 +79,7 @@ inline double fresnel_avg_from_sides(double n, double k, bool has_above, double 
   const double n0 = 1.0 / b_lo, f0 = below(b_lo, k), f1 = above(a_lo, k);
   return f0 + (f1 - f0) * (n - n0) / (a_lo - n0);
 }
+// Dataset attributes of this family beyond the shared ones (see schema::AttributeRule): none.
+inline constexpr std::array<AttributeRule, 0> kAttributes{};
+
 }  // namespace brdftab::schema::fresnel

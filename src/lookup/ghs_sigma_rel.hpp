@@ -3,13 +3,7 @@
 // Eq. 23-26 and Sec. 5.2.3) from tables/ghs_sigma_rel.h5; the datasets, axes and the
 // derived maps w(B, s) and F(1) are in lookup/ghs_sigma_rel_schema.hpp.
 //
-//   const auto& loaded = tables.get("ghs_sigma_rel.h5", "ghs_sigma_rel2_grid");
-//   const brdftab::lookup::GhsSigmaRelGrid grid(loaded);          // checks schema and w_scale
-//   double v = ghs_sigma_rel2(grid, B, c, s);
-//   const brdftab::lookup::GhsSigmaRelMaterial gold(tables.get("ghs_sigma_rel.h5", "ghs_sigma_rel2_material_gold"));
-//   double v = ghs_sigma_rel2(gold, s);                          // per-material constants once
-//   ghs_sigma_rel2_batch(grid, B_values, c_values, s_values, out);  // many points
-//   gold.eval_batch(s_values, out);
+// Example (built and run by CTest): docs/examples/family_helpers.cpp.
 // The exact value is numerics::ghs_sigma_rel2(B, c, s), same arguments.
 #include <cmath>
 #include <span>

@@ -16,6 +16,8 @@
 // ~linear in s for small B.
 #include <cmath>
 
+#include <array>
+
 #include "lookup/schema.hpp"
 
 namespace brdftab::schema::ghs_sigma_rel {
@@ -59,5 +61,14 @@ inline constexpr DatasetSchema kGrid{
     3, {kB, kW, kC}};
 inline constexpr DatasetSchema kMaterial{"ghs_sigma_rel2_material_", true, "sigma_rel^2(s) of material '", 1, {kW}};
 inline constexpr std::array kDatasets{kGrid, kMaterial};
+
+// Dataset attributes of this family (see schema::AttributeRule): K = w_scale * B must be
+// positive and finite (derived axis w(B, s)); a per-material table's B and c (c >= 1).
+inline constexpr AttributeRule kAttributes[] = {
+    {"w_scale", AttributeKind::number, 0, 1e12, true},
+    {"w_definition", AttributeKind::text, 0, 0, false},
+    {"B", AttributeKind::number, 0, 1e12, true},
+    {"c", AttributeKind::number, 1, 1e12, false},
+};
 
 }  // namespace brdftab::schema::ghs_sigma_rel

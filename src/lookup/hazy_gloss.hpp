@@ -2,9 +2,7 @@
 // Runtime lookup of the per-material hazy-gloss albedo tables of tables/hazy_gloss.h5 (schema
 // in lookup/hazy_gloss_schema.hpp). The exact value is numerics::hazy_gloss_albedo.
 //
-//   const brdftab::lookup::HazyGlossAlbedoTable t(
-//       tables.table("hazy_gloss.h5", "hazy_gloss_albedo_ggx_patch_probe_a"));
-//   double a = hazy_gloss_albedo(t, 0.5);
+// Example (built and run by CTest): docs/examples/family_helpers.cpp.
 #include <span>
 
 #include "lookup/hazy_gloss_schema.hpp"

@@ -9,6 +9,8 @@
 //   mu scale ~alpha near grazing). The material's perceptual parameters are dataset attributes
 //   (haze_r_c, haze_g, haze_alpha_n, haze_beta_h, haze_lambda_h), so a lookup finds the table
 //   of a parameter set.
+#include <array>
+
 #include "lookup/schema.hpp"
 
 namespace brdftab::schema::hazy_gloss {
@@ -33,5 +35,19 @@ inline constexpr std::array kDatasets{kGgxPatch, kGgxCompound, kBeckmannPatch, k
 inline const DatasetSchema& albedo_dataset(int ndf, bool compound) {
   return kDatasets[static_cast<std::size_t>(2 * ndf + (compound ? 1 : 0))];
 }
+
+// Dataset attributes of this family (see schema::AttributeRule): the material's perceptual
+// parameters and their haze mapping.
+inline constexpr AttributeRule kAttributes[] = {
+    {"haze_r_c", AttributeKind::number, 0, 1, false},
+    {"haze_g", AttributeKind::number, 0, 1, false},
+    {"haze_alpha_n", AttributeKind::number, 0, 1e3, true},
+    {"haze_beta_h", AttributeKind::number, 0, 1, false},
+    {"haze_lambda_h", AttributeKind::number, 0, 1e3, false},
+    {"haze_beta", AttributeKind::number, 0, 1, false},
+    {"haze_alpha_w", AttributeKind::number, 0, 1e3, true},
+    {"haze_eta", AttributeKind::number, 0, 1e50, false},
+    {"haze_kappa", AttributeKind::number, 0, 1e50, false},
+};
 
 }  // namespace brdftab::schema::hazy_gloss

@@ -7,10 +7,7 @@
 // ones of lookup/interpolate.hpp. Out-of-range input is clamped like OutOfDomain::clamp;
 // NaN gives NaN.
 //
-//   const auto& t = tables.table("hfunc.h5", "hfunc_ls0_compact");
-//   const brdftab::lookup::HfuncTable<float> h(t);   // float for the float32 tables
-//   double value = h(c, mu);
-//   h.eval_batch(c_values, mu_values, out);          // many points: out[i] = h(c[i], mu[i])
+// Example (built and run by CTest): docs/examples/family_helpers.cpp.
 #include <cmath>
 #include <limits>
 #include <span>

@@ -7,6 +7,8 @@
 // behaves like -Psi(0) mu log mu at mu = 0; with mu^(1/4) 4-point Lagrange is O(h^4)).
 // Datasets hfunc_<kind> (precise, float64) and hfunc_<kind>_compact (float32), kind in
 // iso, ls0, ls1, ls2.
+#include <array>
+
 #include "lookup/schema.hpp"
 
 namespace brdftab::schema::hfunc {
@@ -50,5 +52,8 @@ inline constexpr std::array kDatasets{dataset(Kind::isotropic, false), dataset(K
                                       dataset(Kind::ls1, true),  dataset(Kind::ls2, true),
                                       material_dataset(Kind::isotropic), material_dataset(Kind::ls0),
                                       material_dataset(Kind::ls1), material_dataset(Kind::ls2)};
+
+// Dataset attributes of this family beyond the shared ones (see schema::AttributeRule): none.
+inline constexpr std::array<AttributeRule, 0> kAttributes{};
 
 }  // namespace brdftab::schema::hfunc

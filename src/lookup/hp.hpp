@@ -3,8 +3,7 @@
 // from tables/hp.h5 (schema in lookup/hp_schema.hpp). The exact value is
 // numerics::hp_albedo(HpBrdf(material, HpExactIngredients(material)), theta_i).
 //
-//   const brdftab::lookup::HpAlbedoMaterial nickel(tables, "hp.h5", "nickel_g");
-//   brdftab::lookup::HpAlbedoParts a = nickel(0.3);   // a.reflection, a.diffraction, a.layer, a.total()
+// Example (built and run by CTest): docs/examples/family_helpers.cpp.
 #include <cmath>
 #include <span>
 #include <string>

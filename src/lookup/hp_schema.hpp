@@ -4,6 +4,8 @@
 // validate/ERRATA.md), one 1-D table on cos(theta_i) per material and per part. The material's
 // parameters are stored in the text attribute `hp_material` ("lambda_um=... sigma_s_um=...
 // beta=... p=... b_um=... c=... n=... k=... layer=... albedo=...").
+#include <array>
+
 #include "lookup/schema.hpp"
 
 namespace brdftab::schema::hp {
@@ -24,5 +26,11 @@ inline constexpr DatasetSchema kLayer{"hp_albedo_layer_", true,
 inline constexpr std::array kDatasets{kReflection, kDiffraction, kLayer};
 // The three parts in the order above.
 inline constexpr std::array<std::string_view, 3> kPartNames{"reflection", "diffraction", "layer"};
+
+// Dataset attributes of this family (see schema::AttributeRule): the material parameters
+// (numerics::hp_material_text).
+inline constexpr AttributeRule kAttributes[] = {
+    {"hp_material", AttributeKind::text, 0, 0, false},
+};
 
 }  // namespace brdftab::schema::hp

@@ -2,8 +2,7 @@
 // Runtime lookup of the HTSG distribution series from tables/htsg.h5 (schema in
 // lookup/htsg_schema.hpp). Exact values: numerics::htsg_distribution (same name and arguments).
 //
-//   const brdftab::lookup::HtsgDistributionTable t(tables.table("htsg.h5", "htsg_log_distribution"));
-//   double dhat = htsg_distribution(t, g, X);
+// Example (built and run by CTest): docs/examples/family_helpers.cpp.
 #include <cmath>
 #include <span>
 

@@ -8,6 +8,8 @@
 // error of the stored value is the relative error of Dhat. ln Dhat is smooth in X (even, a
 // log-sum-exp of parabolas in X); the identity X axis resolves the m = 1 -> 2 hand-over near
 // X ~ 4 at small g that a sqrt(X) axis smears (1.4e-4 vs 6e-6 at equal points).
+#include <array>
+
 #include "lookup/schema.hpp"
 
 namespace brdftab::schema::htsg {
@@ -19,5 +21,8 @@ inline constexpr DatasetSchema kLogDistribution{
     "htsg_log_distribution", false,
     "ln Dhat(g, X): log of the HTSG distribution series exp(-g) sum_m g^m / (m! m) exp(-X^2 / m)", 2, {kG, kX}};
 inline constexpr std::array kDatasets{kLogDistribution};
+
+// Dataset attributes of this family beyond the shared ones (see schema::AttributeRule): none.
+inline constexpr std::array<AttributeRule, 0> kAttributes{};
 
 }  // namespace brdftab::schema::htsg

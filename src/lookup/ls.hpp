@@ -3,9 +3,7 @@
 // lookup/ls_schema.hpp): k_d(c), its inverse c(k_d), and the plane albedo A(c, mu). The
 // exact values are numerics::ls_kd, numerics::ls_c_from_kd and numerics::LsAlbedo.
 //
-//   const brdftab::lookup::LsKdTable kd(tables.table("ls.h5", "ls_kd"));
-//   double k = ls_kd(kd, c);           // spherical albedo of a medium of albedo c
-//   double c = ls_c_from_kd(kd, 0.6);  // the particle albedo that gives diffuse colour 0.6
+// Example (built and run by CTest): docs/examples/family_helpers.cpp.
 #include <cmath>
 #include <span>
 #include <stdexcept>

@@ -6,6 +6,8 @@
 //              (k_d - 1 ~ -1.92 sqrt(1-c) near c = 1: smooth in that coordinate);
 //   ls_albedo  A(c, mu), the plane (directional-hemispherical) albedo, on (sqrt(1-c), mu^(1/4))
 //              (A behaves like an H-function: mu log mu at mu = 0).
+#include <array>
+
 #include "lookup/schema.hpp"
 
 namespace brdftab::schema::ls {
@@ -59,5 +61,13 @@ inline constexpr DatasetSchema kBrdfCornerMaterial{"ls_brdf_corner_material_", t
                                                    {kMode, kMuMaxLog, kRatio}};
 inline constexpr std::array kDatasets{kKd,        kAlbedo,           kAlbedoMaterial,    kBrdfModes,
                                       kBrdfCorner, kBrdfModesMaterial, kBrdfCornerMaterial};
+
+// Dataset attributes of this family (see schema::AttributeRule): a per-material table's
+// particle albedo c and spherical albedo k_d (named ls_* apart from ghs's c >= 1; hfunc's
+// per-material tables carry ls_c too).
+inline constexpr AttributeRule kAttributes[] = {
+    {"ls_c", AttributeKind::number, 0, 1, false},
+    {"ls_kd", AttributeKind::number, 0, 1, false},
+};
 
 }  // namespace brdftab::schema::ls

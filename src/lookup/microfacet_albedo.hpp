@@ -4,12 +4,7 @@
 // compensation built from them. The exact values are numerics::microfacet_albedo(ndf, mu) and
 // numerics::microfacet_albedo_avg(ndf); the lobe's formula is schema::microfacet_albedo::
 // kulla_conty_lobe_formula, the one definition shared with numerics::kulla_conty_lobe.
-//
-//   const auto& ts = tables;  // a lookup::TableSet
-//   const lookup::MicrofacetAlbedoTables ggx = lookup::microfacet_albedo_tables(ts, "ggx", true);
-//   lookup::MicrofacetAlbedoValues e = lookup::microfacet_albedo(ggx, mu, alpha);
-//   double fms = lookup::kulla_conty_lobe(ggx, mu_o, mu_i, alpha);   // F = 1
-//   lookup::microfacet_albedo_batch(ggx, lookup::MicrofacetAlbedoQuantity::e_corr, mus, alphas, {}, out);
+// Example (built and run by CTest): docs/examples/quickstart.cpp.
 #include <algorithm>
 #include <array>
 #include <cmath>

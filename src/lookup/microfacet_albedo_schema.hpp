@@ -236,4 +236,18 @@ inline double kulla_conty_fresnel_factor_formula(double f_avg, double e_avg) {
   return f_avg * f_avg * e_avg / (1.0 - f_avg * (1.0 - e_avg));
 }
 
+// Dataset attributes of this family (see schema::AttributeRule): a scene slice's exact E_avg
+// (attributes of its E_corr slice); the constants of the sheared s(mu; alpha) of the GGX and
+// Beckmann grids (lookup::detail::read_mu_shear checks them together) and of the blended
+// v(mu) of the generalized Beckmann grids (lookup::detail::read_mu_blend).
+inline constexpr AttributeRule kAttributes[] = {
+    {"Eavg_corr", AttributeKind::number, 0, 1, false},
+    {"Eavg_sep", AttributeKind::number, 0, 1, false},
+    {"mu_s_root_weight", AttributeKind::number, 0, 1, false},
+    {"mu_s_log_scale", AttributeKind::number, 0, 1e12, true},
+    {"mu_v_root_weight", AttributeKind::number, 0, 1, false},
+    {"mu_lo", AttributeKind::number, 0, 1, true},
+    {"mu_hi", AttributeKind::number, 0, 1, true},
+};
+
 }  // namespace brdftab::schema::microfacet_albedo

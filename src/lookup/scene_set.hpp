@@ -6,11 +6,7 @@
 // first use and returns a handle that evaluates every quantity the material needs, from its
 // per-material slice or from the shared grid, whichever the cost model chose.
 //
-//   brdftab::lookup::SceneSet scene("build/scene_tables");
-//   const auto& gold = scene.material("gold");
-//   double g1 = gold.g1(beta * tan_theta);   // Smith G1 of its generalized Beckmann lobe
-//   double s2 = gold.sigma_rel2(sin_theta_i); // GHS renormalization
-//   double f = gold.fresnel_dr();
+// Example (compiled by CTest): docs/examples/scene_materials.cpp.
 //
 // Thread-safe: material() may be called from any thread; handles are immutable.
 #include <filesystem>

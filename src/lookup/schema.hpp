@@ -41,6 +41,16 @@ struct DatasetSchema {
   }
 };
 
+// A dataset attribute the reader accepts (lookup/table_file.cpp reads only declared names,
+// each checked for its type and, for numbers, its range). Shared ones are declared by the
+// reader; a family declares its own as `kAttributes` in its schema header.
+enum class AttributeKind { text, number, integer };
+struct AttributeRule {
+  const char* name;
+  AttributeKind kind;
+  double lo, hi;  // numbers: allowed closed range (always finite)
+  bool lo_open;   // numbers: lo excluded
+};
 // The datasets of a family schema with a fixed name, in schema order: those a file generated
 // from a manifest entry without "materials" (e.g. the default file) may hold. The
 // per-material ones (prefix + material name) exist only for the materials of a manifest or

@@ -3,11 +3,7 @@
 // tables/smith_gbeckmann.h5 (Holzschuch & Pacanowski, Sec. 4.2, Eq. 41-42); the axes and
 // the b = a M1(p) map are in lookup/smith_gbeckmann_schema.hpp.
 //
-//   const brdftab::lookup::SmithGBeckmannTable g1(tables.table("smith_gbeckmann.h5", "smith_gbeckmann_g1_compact"));
-//   double G1 = smith_gbeckmann_g1(g1, a, p);          // a = beta tan(theta)
-//   const double m1 = schema::smith_gbeckmann::first_moment(p);  // once per material
-//   double G1 = smith_gbeckmann_g1(g1, a, p, m1);      // no Gamma functions per query
-//   smith_gbeckmann_g1_batch(g1, a_values, p_values, out);  // many points
+// Example (built and run by CTest): docs/examples/family_helpers.cpp.
 // The exact value is numerics::smith_gbeckmann_g1(a, p), same arguments.
 #include <span>
 

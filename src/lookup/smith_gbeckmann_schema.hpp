@@ -9,6 +9,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <array>
+
 #include "lookup/schema.hpp"
 
 namespace brdftab::schema::smith_gbeckmann {
@@ -36,5 +38,12 @@ inline constexpr DatasetSchema kG1Precise{"smith_gbeckmann_g1_precise", false, k
 // One material's G1 at its fixed p (scenes, docs/scenes.md): 1-D on b, attribute `p`.
 inline constexpr DatasetSchema kG1Material{"smith_gbeckmann_g1_material_", true, "G1(b) of material '", 1, {kB}};
 inline constexpr std::array kDatasets{kG1Compact, kG1Precise, kG1Material};
+
+// Dataset attributes of this family (see schema::AttributeRule): the definition of b; the
+// material's p of a per-material G1 slice (docs/scenes.md).
+inline constexpr AttributeRule kAttributes[] = {
+    {"b_definition", AttributeKind::text, 0, 0, false},
+    {"p", AttributeKind::number, 0, 1e3, true},
+};
 
 }  // namespace brdftab::schema::smith_gbeckmann

@@ -6,12 +6,19 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <limits>
+#include <span>
+#include <string_view>
+#include <vector>
 
+#include "lookup/family_list.hpp"
+#include "lookup/family_schemas.hpp"
 #include "lookup/hdf5_util.hpp"
 #include "lookup/interpolation_scheme.hpp"
 #include "lookup/number_format.hpp"
@@ -148,17 +155,13 @@ class OpenFile {
 };
 
 // --- The attribute schema: only these names are read, each checked for type and range.
-enum class Kind { text, number, integer };
-struct AttributeRule {
-  const char* name;
-  Kind kind;
-  double lo, hi;     // numbers: allowed closed range (always finite)
-  bool lo_open;      // numbers: lo excluded
-};
+using Kind = schema::AttributeKind;
+using schema::AttributeRule;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kMaxFinite = std::numeric_limits<double>::max();
-// Dataset attributes (README "Table file format"; the family-specific ones at the end).
-constexpr AttributeRule kDatasetRules[] = {
+// Dataset attributes every family may write (docs/file-format.md); each family adds its own
+// in its schema header (schema::K::kAttributes), collected by dataset_attribute_rules().
+constexpr AttributeRule kSharedDatasetRules[] = {
     {"schema_version", Kind::integer, 0, 0, false},  // checked separately (clear message)
     {"quantity", Kind::text, 0, 0, false},
     {"interpolation", Kind::text, 0, 0, false},
@@ -185,46 +188,9 @@ constexpr AttributeRule kDatasetRules[] = {
     {"inputs", Kind::text, 0, 0, false},
     {"derived_axes", Kind::text, 0, 0, false},
     {"value_formula", Kind::text, 0, 0, false},
-    // smith_gbeckmann
-    {"b_definition", Kind::text, 0, 0, false},
     {"lookup", Kind::text, 0, 0, false},
     {"source", Kind::text, 0, 0, false},
-    // ghs_sigma_rel: K = w_scale * B must be positive and finite (derived axis w(B, s)).
-    {"w_scale", Kind::number, 0, 1e12, true},
-    {"w_definition", Kind::text, 0, 0, false},
     {"material", Kind::text, 0, 0, false},
-    {"B", Kind::number, 0, 1e12, true},
-    {"c", Kind::number, 1, 1e12, false},
-    // hazy_gloss: the material's perceptual parameters and their haze mapping
-    {"haze_r_c", Kind::number, 0, 1, false},
-    {"haze_g", Kind::number, 0, 1, false},
-    {"haze_alpha_n", Kind::number, 0, 1e3, true},
-    {"haze_beta_h", Kind::number, 0, 1, false},
-    {"haze_lambda_h", Kind::number, 0, 1e3, false},
-    {"haze_beta", Kind::number, 0, 1, false},
-    {"haze_alpha_w", Kind::number, 0, 1e3, true},
-    {"haze_eta", Kind::number, 0, 1e50, false},
-    {"haze_kappa", Kind::number, 0, 1e50, false},
-    // hp: the material parameters (numerics::hp_material_text)
-    {"hp_material", Kind::text, 0, 0, false},
-    // filip: the material's parameter set, "phi_a1=...,w1=...,..." (generators/filip.hpp)
-    {"filip_parameters", Kind::text, 0, 0, false},
-    // per-material tables of scenes (docs/scenes.md): smith_gbeckmann p; ls/hfunc particle
-    // albedo c and spherical albedo k_d (named ls_* apart from ghs's c >= 1)
-    {"p", Kind::number, 0, 1e3, true},
-    {"ls_c", Kind::number, 0, 1, false},
-    // microfacet_albedo scene slices: the material's exact E_avg (attributes of its E_corr slice)
-    {"Eavg_corr", Kind::number, 0, 1, false},
-    {"Eavg_sep", Kind::number, 0, 1, false},
-    // microfacet_albedo GGX and Beckmann grids: constants of the sheared s(mu; alpha)
-    // (lookup/microfacet_albedo_schema.hpp; lookup::detail::read_mu_shear checks them together)
-    {"mu_s_root_weight", Kind::number, 0, 1, false},
-    {"mu_s_log_scale", Kind::number, 0, 1e12, true},
-    // generalized Beckmann grids: the weight of the blended v(mu) (lookup::detail::read_mu_blend)
-    {"mu_v_root_weight", Kind::number, 0, 1, false},
-    {"mu_lo", Kind::number, 0, 1, true},
-    {"mu_hi", Kind::number, 0, 1, true},
-    {"ls_kd", Kind::number, 0, 1, false},
 };
 constexpr AttributeRule kFileRules[] = {
     {"schema_version", Kind::integer, 0, 0, false},
@@ -246,10 +212,28 @@ constexpr AttributeRule kAxisRules[] = {
     {"u_step", Kind::number, -kMaxFinite, kMaxFinite, false},
 };
 
-template <std::size_t N>
+}  // namespace
+
+// The shared dataset rules, then every family's, in lookup/family_list.hpp order
+// (tests/test_family_attributes.cpp checks that no name is declared twice).
+
+const std::vector<schema::AttributeRule>& dataset_attribute_rules() {
+  static const std::vector<AttributeRule> rules = [] {
+    std::vector<AttributeRule> v(std::begin(kSharedDatasetRules), std::end(kSharedDatasetRules));
+    const auto add = [&v](const auto& family_rules) { v.insert(v.end(), std::begin(family_rules), std::end(family_rules)); };
+#define BRDFTAB_ADD_RULES(K) add(schema::K::kAttributes);
+    BRDFTAB_FAMILIES(BRDFTAB_ADD_RULES)
+#undef BRDFTAB_ADD_RULES
+    return v;
+  }();
+  return rules;
+}
+
+namespace {
+
 std::map<std::string, Attribute> read_schema_attributes(const std::filesystem::path& file, const std::string& dataset,
                                                         const std::string& where, hid_t obj,
-                                                        const AttributeRule (&rules)[N], long long version) {
+                                                        std::span<const AttributeRule> rules, long long version) {
   std::map<std::string, Attribute> out;
   for (const auto& rule : rules) {
     const auto r = hdf5::read_attribute(obj, rule.name, kMaxAttributeStringBytes, version >= 2);
@@ -615,7 +599,7 @@ LoadedTable load_table_in(const OpenFile& f, const std::string& dataset) {
   LoadedTable out;
   out.info.file = file.string();
   out.info.dataset = dataset;
-  out.info.attributes = read_schema_attributes(file, dataset, "", d, kDatasetRules, file_v);
+  out.info.attributes = read_schema_attributes(file, dataset, "", d, dataset_attribute_rules(), file_v);
   const auto& attrs = out.info.attributes;
 
   auto sv = attrs.find("schema_version");

@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "lookup/attribute.hpp"
+#include "lookup/schema.hpp"
 #include "lookup/table.hpp"
 #include "lookup/table_digest.hpp"
 
@@ -106,6 +107,10 @@ DigestStatus check_file_digest(const std::filesystem::path& file);
 // (the table's); version 1: a hard-linked dataset, or the group /axes. Else TableFileError.
 std::vector<std::string> list_tables(const std::filesystem::path& file, const OpenOptions& options = {});
 LoadedTable load_table(const std::filesystem::path& file, const std::string& dataset, const OpenOptions& options = {});
+
+// The dataset attributes the reader accepts: the shared ones, then each family's
+// schema::K::kAttributes (lookup/family_list.hpp order). Others are not read.
+const std::vector<schema::AttributeRule>& dataset_attribute_rules();
 // File-level attributes the schema names (schema_version, generator, created_utc).
 std::map<std::string, Attribute> file_attributes(const std::filesystem::path& file, const OpenOptions& options = {});
 

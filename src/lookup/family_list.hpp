@@ -8,6 +8,7 @@
 //   brdftab::cli::K::quantities()                       src/cli/eval_K.cpp
 //   brdftab::validate::K::report(ReportContext&)        validate/report_K.cpp
 //   brdftab::validate::K::register_benchmarks(const BenchContext&)  validate/bench_K.cpp
+//   brdftab::validate::K::pareto_quantities(const pareto::Options&)  validate/pareto_K.cpp
 #define BRDFTAB_FAMILIES(X) \
   X(demo)                   \
   X(smith_gbeckmann)        \
