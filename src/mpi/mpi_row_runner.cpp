@@ -27,6 +27,7 @@ enum Tag : int { kRequest = 101, kGrant = 102, kResult = 103, kFail = 104, kEnd 
 constexpr int kSlots = 64;
 std::array<std::array<char, 320>, kSlots> g_current{};
 int g_rank = 0;
+std::int64_t g_stage = 0;  // stages run by this process, over all runners
 
 extern "C" void on_death(int sig) {
   char head[96];
@@ -183,7 +184,7 @@ MpiRowRunner::MpiRowRunner(MPI_Comm comm, gen::Checkpoint* checkpoint, int threa
 
 void MpiRowRunner::run(const gen::RowJobs& jobs, const gen::RowFunction& row, std::span<double> out,
                        const gen::GenerateContext& ctx) {
-  ++stage_;
+  stage_ = ++g_stage;  // the same sequence on every rank (they run the same stages)
   if (rank_ == 0)
     deal(jobs, row, out, ctx);
   else
@@ -231,6 +232,8 @@ void MpiRowRunner::deal(const gen::RowJobs& jobs, const gen::RowFunction& row, s
         const std::vector<char> buf = receive(comm_, st);
         Header h{};
         std::memcpy(&h, buf.data(), std::min(buf.size(), sizeof h));
+        // A request a rank sent just before the end of an earlier stage: its answer is END.
+        if (st.MPI_TAG == kRequest && buf.size() >= sizeof h && h.stage < stage_) continue;
         if (buf.size() < sizeof h || h.stage != stage_) {
           std::cerr << "brdftab generate: rank " << st.MPI_SOURCE << " sent a message of another stage (" << h.stage
                     << ", expected " << stage_ << ")" << std::endl;
