@@ -15,6 +15,8 @@ class Progress {
   virtual void update(const std::string& stage, double fraction) = 0;
 };
 
+class RowRunner;  // generators/row_runner.hpp
+
 struct GenerateContext {
   std::filesystem::path out_dir;
   Progress* progress = nullptr;  // may be null
@@ -27,6 +29,9 @@ struct GenerateContext {
   bool dry_run = false;
   // Written as the file-level attribute content_key (generators/content_key.hpp).
   std::string content_key;
+  // Who computes the rows (generators/row_runner.hpp): null, this process's OpenMP threads;
+  // else a checkpointing runner or the MPI one. Same values either way.
+  RowRunner* rows = nullptr;
   void report(const std::string& stage, double fraction) const {
     if (progress) progress->update(stage, fraction);
   }
@@ -43,6 +48,9 @@ struct TableSummary {
   double max_abs_error = 0, max_rel_error = 0;  // measured off-grid
   std::size_t error_samples = 0;
   double seconds = 0;  // fill + measurement (dry run: the estimate)
+  // Dry run only: the estimate in CPU seconds (one core), and the seconds of the costliest
+  // row (a job on many ranks cannot end sooner than its last row).
+  double cpu_seconds = 0, row_seconds = 0;
 };
 
 }  // namespace brdftab::gen

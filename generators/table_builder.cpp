@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "generators/preflight.hpp"
+#include "generators/row_runner.hpp"
 #include "numerics/domain_check.hpp"
 
 namespace brdftab::gen {
@@ -103,6 +104,7 @@ BuiltTable dry_run_table(const TableSpec& spec, const RowFunction& row) {
   double seconds = (static_cast<double>(rows) + err_rows) * setup + (static_cast<double>(values) + err_values) * per;
   // Declared costs are single-core: the estimate is CPU seconds, not depending on the
   // machine's thread count (reproducible decisions); timed samples are wall time of a row.
+  const double cpu_seconds = seconds;
   if (axes.size() >= 2 && !(spec.cost_row_seconds >= 0)) seconds /= std::max(1, omp_get_max_threads());
   const std::vector<double> zeros(values, 0.0);
   BuiltTable out;
@@ -115,6 +117,8 @@ BuiltTable dry_run_table(const TableSpec& spec, const RowFunction& row) {
   s.interpolation = std::string(lookup::interpolation_name(spec.interpolation));
   s.bytes = out.dataset.table.bytes();
   s.seconds = seconds;
+  s.cpu_seconds = cpu_seconds;
+  s.row_seconds = setup + static_cast<double>(n_last) * per;
   return out;
 }
 
@@ -137,9 +141,24 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
   std::size_t n_rows = 1;
   for (int d = 0; d + 1 < rank; ++d) n_rows *= static_cast<std::size_t>(axes[d].n);
 
+  std::vector<std::string> outer_names;
+  for (int d = 0; d + 1 < rank; ++d) outer_names.push_back(axes[d].name);
+  // Each stage lists its row requests (RowJobs) and gets their exact values from
+  // compute_rows: this process's threads, or the runner in ctx (checkpointed, or rows dealt
+  // across MPI ranks); the same values either way.
+  const auto make_jobs = [&](const char* stage, std::size_t count) {
+    RowJobs j;
+    j.dataset = spec.dataset;
+    j.stage = stage;
+    j.outer_names = outer_names;
+    j.count = count;
+    j.outer.reserve(count * outer_names.size());
+    return j;
+  };
+
   // 1. Fill the grid, one row per task.
-  std::vector<double> values(n_rows * n_last);
-  parallel_rows(n_rows, ctx, spec.dataset + ": fill", [&](std::size_t r) {
+  RowJobs fill = make_jobs("fill", n_rows);
+  for (std::size_t r = 0; r < n_rows; ++r) {
     double outer[lookup::kMaxRank];
     std::size_t rem = r;
     for (int d = rank - 2; d >= 0; --d) {
@@ -147,8 +166,12 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
       outer[d] = grid[d][rem % n];
       rem /= n;
     }
-    row(std::span<const double>(outer, rank - 1), grid.back(), std::span<double>(values.data() + r * n_last, n_last));
-  });
+    fill.outer.insert(fill.outer.end(), outer, outer + (rank - 1));
+  }
+  fill.lasts = {grid.back()};
+  fill.finish();
+  std::vector<double> values(n_rows * n_last);
+  compute_rows(fill, row, values, ctx);
   lookup::Table table(spec.dataset, axes, values, spec.storage, spec.interpolation);
 
   // 2. Measure the error off-grid: points uniform in the transformed coordinates.
@@ -159,7 +182,9 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
     std::vector<double> abs_at, rel_at;
   };
   std::vector<Worst> worst(rows);
-  parallel_rows(rows, ctx, spec.dataset + ": measure", [&](std::size_t r) {
+  RowJobs measure = make_jobs("measure", rows);
+  measure.lasts.resize(rows);
+  for (std::size_t r = 0; r < rows; ++r) {
     // mt19937_64's output is fixed by the standard; std::uniform_real_distribution's is not
     // (it differs between standard libraries), so the uniform numbers are made here from the
     // raw 64-bit output: the top 53 bits times 2^-53, in [0, 1). Same points everywhere.
@@ -170,10 +195,19 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
       const double f = uniform01();
       return lookup::invert_transform(a.transform, a.u0 + f * (a.n - 1) * a.du, a.scale);
     };
-    std::vector<double> outer(rank - 1), last(per_row), exact(per_row), point(rank);
-    for (int d = 0; d + 1 < rank; ++d) outer[d] = sample(axes[d]);
+    for (int d = 0; d + 1 < rank; ++d) measure.outer.push_back(sample(axes[d]));
+    std::vector<double>& last = measure.lasts[r];
+    last.resize(per_row);
     for (auto& x : last) x = std::clamp(sample(axes.back()), axes.back().x_lo, axes.back().x_hi);
-    row(outer, last, exact);
+  }
+  measure.finish();
+  std::vector<double> measured(measure.values());
+  compute_rows(measure, row, measured, ctx);
+  for (std::size_t r = 0; r < rows; ++r) {
+    const auto outer = measure.outer_of(r);
+    const auto& last = measure.lasts[r];
+    const double* exact = measured.data() + measure.offset[r];
+    std::vector<double> point(rank);
     Worst w;
     for (std::size_t j = 0; j < per_row; ++j) {
       for (int d = 0; d + 1 < rank; ++d) point[d] = outer[d];
@@ -195,27 +229,32 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
       }
     }
     worst[r] = std::move(w);
-  });
+  }
   // 2b. The targeted points, one row call each.
   const std::size_t n_targeted = spec.targeted_points.size();
   if (n_targeted > 0) {
     worst.resize(rows + n_targeted);
-    parallel_rows(n_targeted, ctx, spec.dataset + ": measure targeted", [&](std::size_t i) {
-      const std::vector<double>& point = spec.targeted_points[i];
+    RowJobs targeted = make_jobs("targeted", n_targeted);
+    for (const std::vector<double>& point : spec.targeted_points) {
       if (point.size() != static_cast<std::size_t>(rank))
         throw std::invalid_argument("table '" + spec.dataset + "': a targeted error point has " +
                                     std::to_string(point.size()) + " coordinates, expected " + std::to_string(rank));
-      const double last = point.back();
-      double exact = 0;
-      row(std::span<const double>(point.data(), rank - 1), std::span<const double>(&last, 1), std::span<double>(&exact, 1));
-      if (!std::isfinite(exact))
+      targeted.outer.insert(targeted.outer.end(), point.begin(), point.end() - 1);
+      targeted.lasts.push_back({point.back()});
+    }
+    targeted.finish();
+    std::vector<double> exact(n_targeted);
+    compute_rows(targeted, row, exact, ctx);
+    for (std::size_t i = 0; i < n_targeted; ++i) {
+      const std::vector<double>& point = spec.targeted_points[i];
+      if (!std::isfinite(exact[i]))
         throw std::runtime_error("table '" + spec.dataset + "': exact value is not finite at a targeted error point");
-      const double err = std::abs(table.eval(point) - exact);
+      const double err = std::abs(table.eval(point) - exact[i]);
       Worst w;
       w.abs = err, w.abs_at = point;
-      if (std::abs(exact) > spec.rel_floor) w.rel = err / std::abs(exact), w.rel_at = point;
+      if (std::abs(exact[i]) > spec.rel_floor) w.rel = err / std::abs(exact[i]), w.rel_at = point;
       worst[rows + i] = std::move(w);
-    });
+    }
   }
   Worst total;
   for (auto& w : worst) {

@@ -67,6 +67,8 @@ int run_main(int argc, char** argv) {
   g->add_option("--only", gen.only, "generate only these families")->expected(1, -1);
   g->add_option("--threads", gen.threads, "OpenMP threads, 1-1024 (default: all cores)")->check(CLI::Range(1, 1024));
   g->add_flag("--quiet,-q", gen.quiet, "no progress output");
+  g->add_flag("--discard-checkpoint", gen.discard_checkpoint,
+              "discard a checkpoint left by a run of another content key instead of stopping (docs/clusters.md)");
 
   EvalOptions ev;
   std::string quantities;
@@ -128,6 +130,10 @@ int run_main(int argc, char** argv) {
   auto* p_out = p->add_option("--tables", pl.out_dir, "also report which files in this table folder are up to date");
   DeprecatedFolder p_old{&pl.out_dir};
   p_old.add(p, "--out", p_out);
+  p->add_option("--ranks", pl.ranks, "estimate the wall time on this many MPI ranks, 1-1000000 (docs/clusters.md)")
+      ->check(CLI::Range(1, 1000000));
+  p->add_option("--threads", pl.threads, "threads per rank for the wall time (default: this machine's cores)")
+      ->check(CLI::Range(1, 1024));
 
   CheckOptions ck;
   auto* c = app.add_subcommand("check", "exit 1 if a file the scene or manifest needs is missing or stale in the table folder");
@@ -175,6 +181,10 @@ int run_main(int argc, char** argv) {
 
   if (g->parsed()) {
     gen.out_given = g_out->count() > 0 || g_old.option->count() > 0;
+    if (generate_runner) return generate_runner(gen, std::cout, std::cerr);
+    // Started by mpirun/srun: the MPI build of the same command (brdftab-mpi beside this
+    // executable) deals the rows across the ranks; this one never links MPI.
+    if (const int code = exec_mpi_generate(argc, argv, std::cerr); code != 0) return code;
     return run_generate(gen, std::cout, std::cerr);
   }
   if (p->parsed()) return run_plan(pl, std::cout, std::cerr);

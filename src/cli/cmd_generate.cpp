@@ -1,5 +1,6 @@
 // `brdftab generate [--manifest FILE | --scene FILE] [--tables DIR] [--only NAME...] [--threads N]
-//                   [--quiet] [--rebuild] [--force]`
+//                   [--quiet] [--rebuild] [--force] [--discard-checkpoint]`
+// Under mpirun the same command runs src/mpi/generate_mpi.cpp (rows dealt across ranks).
 // Incremental: a file whose stored content key matches its entry is skipped (docs/scenes.md).
 #include <omp.h>
 #include <unistd.h>
@@ -12,14 +13,14 @@
 #include "cli/commands.hpp"
 #include "cli/job_source.hpp"
 #include "cli/progress.hpp"
+#include "generators/checkpoint.hpp"
 #include "generators/content_key.hpp"
+#include "generators/row_runner.hpp"
 #include "generators/family.hpp"
 
 namespace brdftab::cli {
 
-namespace {
-
-void print_summary(const std::vector<gen::TableSummary>& rows, std::ostream& out) {
+void print_generate_summary(const std::vector<gen::TableSummary>& rows, std::ostream& out) {
   char line[512];
   std::snprintf(line, sizeof line, "%-22s %-22s %-14s %-8s %-7s %10s %11s %11s %8s\n", "file", "dataset", "shape",
                 "storage", "interp", "size", "max_abs_err", "max_rel_err", "seconds");
@@ -33,8 +34,6 @@ void print_summary(const std::vector<gen::TableSummary>& rows, std::ostream& out
     out << line;
   }
 }
-
-}  // namespace
 
 int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err) {
   if (!o.scene.empty() && !o.manifest.empty()) {
@@ -63,14 +62,26 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
     else
       todo.push_back(&job);
   }
-  std::size_t file_index = 0;
+  std::size_t file_index = 0, rows_resumed = 0, rows_computed = 0;
   for (const auto* jp : todo) {
     const auto& job = *jp;
     progress.start_file(++file_index, todo.size(), job.family);
     try {
+      // Finished rows go to <file>.checkpoint beside the output (generators/checkpoint.hpp):
+      // a killed run started again recomputes none of them. Removed once the file is written.
+      gen::Checkpoint checkpoint(o.out_dir / job.file, job.key, err, o.discard_checkpoint);
+      gen::LocalRowRunner runner(&checkpoint);
+      ctx.rows = &runner;
       ctx.content_key = job.key;
       auto s = gen::find_family(job.family)->generate(job.entry, ctx);
+      ctx.rows = nullptr;
+      checkpoint.remove();
+      rows_resumed += runner.rows_resumed, rows_computed += runner.rows_computed;
       summaries.insert(summaries.end(), s.begin(), s.end());
+    } catch (const gen::CheckpointRefused& ex) {
+      progress.finish_line();
+      err << "brdftab generate: " << ex.what() << "\n";
+      return 1;
     } catch (const gen::ManifestError& ex) {
       progress.finish_line();
       err << "brdftab generate: family '" << job.family << "': " << ex.what() << "\n";
@@ -97,7 +108,7 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
   }
   progress.finish_line();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (!summaries.empty()) print_summary(summaries, out);
+  if (!summaries.empty()) print_generate_summary(summaries, out);
   char line[256];
   std::snprintf(line, sizeof line, "%zu tables in %.2f s (errors measured off-grid against exact numerics)", summaries.size(),
                 seconds);
@@ -107,6 +118,7 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
     for (const auto& f : skipped) out << " " << f;
   }
   if (src->scene) out << (index_written ? "; scene index written" : "; scene index up to date");
+  if (rows_resumed > 0) out << "; " << rows_resumed << " rows from checkpoints, " << rows_computed << " computed";
   out << "\n";
   return 0;
 }

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "generators/generate_context.hpp"
+
 namespace brdftab::cli {
 
 // Default table folder to read: $BRDFTAB_TABLES, else ./tables if it exists, else the installed
@@ -21,13 +23,24 @@ struct GenerateOptions {
   int threads = 0;
   bool quiet = false;
   bool rebuild = false;            // rebuild files whose content key matches too
+  bool discard_checkpoint = false; // start afresh over a checkpoint of another content key
 };
 int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err);
+// The table of what generate built (file, dataset, shape, size, errors, seconds).
+void print_generate_summary(const std::vector<gen::TableSummary>& rows, std::ostream& out);
+// Runs `generate` instead of run_generate when set: the MPI executable (brdftab-mpi) sets it.
+extern int (*generate_runner)(const GenerateOptions&, std::ostream&, std::ostream&);
+// Under an MPI launcher: execs brdftab-mpi beside this executable with the same arguments
+// (does not return), or returns 2 after a message if there is none and the job has several
+// ranks; 0 when not launched by MPI (or one rank without brdftab-mpi).
+int exec_mpi_generate(int argc, char** argv, std::ostream& err);
 
 // `brdftab plan`: what generate would build (tables, shapes, bytes, estimated seconds,
 // expected error) and, with --tables, what in that folder is already up to date.
 struct PlanOptions {
   std::filesystem::path manifest, scene, out_dir;
+  int ranks = 1;  // wall time estimated at this many MPI ranks (each of --threads threads)
+  int threads = 0;  // threads per rank (default: this machine's cores)
 };
 int run_plan(const PlanOptions& o, std::ostream& out, std::ostream& err);
 
