@@ -68,7 +68,7 @@ int run_generate_mpi(const cli::GenerateOptions& o, std::ostream& out, std::ostr
   std::ostringstream quiet_err;
   std::ostream& my_err = rank == 0 ? err : quiet_err;  // rank 0 speaks for all
   if (!o.scene.empty() && !o.out_given) {
-    my_err << "brdftab generate: --scene needs --out DIR (a scene's tables never go to the default table folder)\n";
+    my_err << "brdftab generate: --scene needs --tables DIR (a scene's tables never go to the default table folder)\n";
     return 2;
   }
   // Every rank reads the input; all must succeed and see the same jobs (same files on
