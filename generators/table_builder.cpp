@@ -86,8 +86,10 @@ std::vector<EdgeRow> edge_rows(const std::vector<lookup::Axis>& axes, unsigned l
       EdgeRow r;
       for (std::size_t e = 0; e + 1 < rank; ++e) {
         const lookup::Axis& a = axes[e];
-        const double t = (c >> e) & 1 ? a.n - 1 - f : f;
-        r.outer.push_back(std::clamp(lookup::invert_transform(a.transform, a.u0 + t * a.du, a.scale), a.x_lo, a.x_hi));
+        const bool hi = (c >> e) & 1;
+        const double t = hi ? a.n - 1 - f : f;
+        r.outer.push_back(f == 0 ? (hi ? a.x_hi : a.x_lo)
+                                 : std::clamp(lookup::invert_transform(a.transform, a.u0 + t * a.du, a.scale), a.x_lo, a.x_hi));
       }
       r.last = last_values();
       rows.push_back(std::move(r));
