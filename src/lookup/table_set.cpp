@@ -18,6 +18,7 @@ const LoadedTable& TableSet::get(const std::string& file, const std::string& dat
   auto f = files_.find(file);
   if (f == files_.end()) f = files_.emplace(file, VerifiedFile::open(dir_ / file, options_)).first;
   auto loaded = std::make_unique<LoadedTable>(f->second.load_table(dataset));
+  if (!substitute_.empty() && substitute_ == dataset) substituted_ = true;  // NAME is the default table itself
   if (!substitute_.empty() && substitute_ != dataset) {
     const auto names = f->second.list_tables();
     if (std::find(names.begin(), names.end(), substitute_) != names.end()) {
