@@ -22,6 +22,7 @@
 #include <sstream>
 
 #include "generators/preflight.hpp"
+#include "generators/table_builder.hpp"
 #include "lookup/ls_brdf.hpp"
 #include "lookup/ls_schema.hpp"
 #include "lookup/number_format.hpp"
@@ -127,12 +128,44 @@ struct Worst {
 
 // Error of f in each zone at err.rows x err.per_row random points. eval(c, mu_i, mu_o, phi)
 // gives the table's f; c_of(u01) draws a row's c.
+// Then the shared edge points (generators/table_builder.hpp, edge_values): one more row per
+// c in edge_c (the edge values of the c axis; a material's c), each with every pair of edge
+// values of its zone's mu_max and r axes (mu_i = mu_max, mu_o = mu_max r^4, and swapped), phi
+// cycling through 0, pi/2, pi and a random angle.
 template <class Eval, class COf>
 std::pair<Worst, Worst> measure(const BrdfResolution& res, const BrdfErrorSampling& err, const GenerateContext& ctx,
-                                Eval eval, COf c_of) {
+                                const ZoneAxes& z, const std::vector<double>& edge_c, Eval eval, COf c_of) {
   const std::size_t rows = std::size_t(std::max(1, err.rows));
-  std::vector<Worst> wm(rows), wc(rows);
-  parallel_for(rows, [&](std::size_t row) {
+  std::vector<Worst> wm(rows + edge_c.size()), wc(rows + edge_c.size());
+  parallel_for(rows + edge_c.size(), [&](std::size_t row) {
+    if (row >= rows) {
+      const double c = edge_c[row - rows];
+      const numerics::LsHalfSpace h(c, numerics::ls_table_solver_options(kErrorModes));
+      numerics::LsHalfSpace::Direction a, b;
+      double F[kErrorModes];
+      std::mt19937_64 rng(54321 + 7919 * row + 1000003ull * ctx.error_seed);
+      int k = 0;
+      for (const auto* zone : {&z.main, &z.corner})
+        for (double mu_max : edge_values((*zone)[1]))
+          for (double r : edge_values((*zone)[2])) {
+            const double lo = mu_max * r * r * r * r;
+            const double mi = k % 2 ? mu_max : lo, mo = k % 2 ? lo : mu_max;
+            if (mi <= 0 || mo <= 0) continue;  // the lookup's domain is mu in (0, 1]
+            const double phis[4] = {0, std::numbers::pi / 2, std::numbers::pi,
+                                    std::numbers::pi * static_cast<double>(rng() >> 11) * 0x1.0p-53};
+            const double phi = phis[k++ % 4];
+            numerics::ls_scaled_direction(h, mi, a);
+            numerics::ls_scaled_direction(h, mo, b);
+            for (int m = 0; m < kErrorModes; ++m) F[m] = numerics::ls_mode_value(h, m, a, b);
+            const double exact = numerics::ls_f_single(c, mi, mo, phi) + numerics::ls_f_multiple_from_modes(F, mi, mo, phi);
+            if (!std::isfinite(exact)) throw std::runtime_error("ls brdf tables: exact f is not finite at an edge point");
+            const double e = std::abs(eval(c, mi, mo, phi) - exact);
+            const std::string where = "c = " + format_number(c) + ", mu_i = " + format_number(mi) +
+                                      ", mu_o = " + format_number(mo) + ", phi = " + format_number(phi);
+            (std::max(mi, mo) >= res.split ? wm[row] : wc[row]).add(e, exact, where);
+          }
+      return;
+    }
     std::mt19937_64 rng(12345 + 7919 * row + 1000003ull * ctx.error_seed);
     auto u01 = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
     const double c = c_of(u01());
@@ -162,7 +195,7 @@ std::pair<Worst, Worst> measure(const BrdfResolution& res, const BrdfErrorSampli
     }
   });
   std::pair<Worst, Worst> out;
-  for (std::size_t r = 0; r < rows; ++r) out.first.merge(wm[r]), out.second.merge(wc[r]);
+  for (std::size_t r = 0; r < wm.size(); ++r) out.first.merge(wm[r]), out.second.merge(wc[r]);
   return out;
 }
 
@@ -173,7 +206,9 @@ std::string sampling_text(const BrdfResolution& res, const BrdfErrorSampling& er
     << "3/4 of (mu_i, mu_o) uniform in mu^(1/4) on [" << format_number(res.mu_lo) << ", 1], 1/4 log-uniform on ["
     << format_number(res.mu_lo) << ", " << format_number(res.split) << "], phi uniform in [0, pi]; error of f "
     << "(single + multiple) through lookup/ls_brdf.hpp against a " << kErrorModes
-    << "-mode solve with the table's solver settings; split by zone (mu_max); relative error where f > 1e-9";
+    << "-mode solve with the table's solver settings; split by zone (mu_max); relative error where f > 1e-9; plus "
+    << (generic ? "one row per edge value of the c axis" : "one row") << " of (mu_max, r) pairs of the zone axes' "
+    << kEdgeSamplingText << ", phi cycling through 0, pi/2, pi and a random angle";
   return s.str();
 }
 
@@ -237,7 +272,7 @@ std::vector<BuiltTable> build_brdf_material(const std::string& name, double c, d
   std::pair<Worst, Worst> w;
   if (!ctx.dry_run) {
     const lookup::LsBrdfMaterial eval(tm, tc, c);
-    w = measure(res, err, ctx, [&](double, double mi, double mo, double phi) { return eval.eval(mi, mo, phi).f; },
+    w = measure(res, err, ctx, z, {c}, [&](double, double mi, double mo, double phi) { return eval.eval(mi, mo, phi).f; },
                 [c](double) { return c; });
   }
   const double seconds = ctx.dry_run ? declared_seconds(res, 1, 1, err.per_row)
@@ -280,7 +315,10 @@ std::vector<BuiltTable> build_brdf_generic(double c_lo, double c_hi, int c_point
   if (!ctx.dry_run) {
     const lookup::LsBrdfTables eval(tm, tc);
     const double u_lo = std::sqrt(1 - c_hi), u_hi = std::sqrt(1 - c_lo);
-    w = measure(res, err, ctx, [&](double c, double mi, double mo, double phi) { return eval.eval(c, mi, mo, phi).f; },
+    std::vector<double> edge_c = edge_values(ca);
+    for (double& c : edge_c) c = std::max(c, 1e-6);  // as fill_at: the node c = 0 is solved at 1e-6
+    edge_c.erase(std::unique(edge_c.begin(), edge_c.end()), edge_c.end());
+    w = measure(res, err, ctx, z, edge_c, [&](double c, double mi, double mo, double phi) { return eval.eval(c, mi, mo, phi).f; },
                 [&](double u) {
                   const double s = u_lo + (u_hi - u_lo) * u;
                   return std::clamp(1 - s * s, c_lo, c_hi);

@@ -28,6 +28,76 @@ std::vector<double> axis_values(const AxisSpec& spec) {
   return x;
 }
 
+std::vector<double> edge_values(const lookup::Axis& a) {
+  std::vector<double> v{a.x_lo, a.x_hi};
+  const auto in_u = [&](double t) {  // grid coordinate t in [0, n-1] -> physical value
+    return lookup::invert_transform(a.transform, a.u0 + t * a.du, a.scale);
+  };
+  const double last = a.n - 1;
+  for (double f : {0.5, 0.1, 1e-2, 1e-3, 1e-4}) {
+    v.push_back(in_u(f));
+    v.push_back(in_u(last - f));
+    const double x1 = a.value(1), xm = a.value(a.n - 2);
+    if (std::isfinite(a.x_lo) && std::isfinite(x1)) v.push_back(a.x_lo + f * (x1 - a.x_lo));
+    if (std::isfinite(a.x_hi) && std::isfinite(xm)) v.push_back(a.x_hi - f * (a.x_hi - xm));
+  }
+  if (a.n >= 3) {
+    v.push_back(in_u(1.5));
+    v.push_back(in_u(last - 1.5));
+  }
+  std::vector<double> out;
+  for (double x : v)
+    if (std::isfinite(x) || x == a.x_hi) out.push_back(std::clamp(x, a.x_lo, a.x_hi));
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<EdgeRow> edge_rows(const std::vector<lookup::Axis>& axes, unsigned long long seed, int random_last) {
+  const std::size_t rank = axes.size();
+  std::mt19937_64 rng(seed);
+  auto uniform01 = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  auto random = [&](const lookup::Axis& a) {
+    return std::clamp(lookup::invert_transform(a.transform, a.u0 + uniform01() * (a.n - 1) * a.du, a.scale), a.x_lo,
+                      a.x_hi);
+  };
+  const lookup::Axis& la = axes.back();
+  auto last_values = [&] {
+    std::vector<double> last = edge_values(la);
+    for (int k = 0; k < random_last; ++k) last.push_back(random(la));
+    return last;
+  };
+  std::vector<EdgeRow> rows;
+  if (rank == 1) {
+    rows.push_back({{}, last_values()});
+    return rows;
+  }
+  for (std::size_t d = 0; d + 1 < rank; ++d)
+    for (double x : edge_values(axes[d])) {
+      EdgeRow r;
+      r.outer.resize(rank - 1);
+      for (std::size_t e = 0; e + 1 < rank; ++e) r.outer[e] = e == d ? x : random(axes[e]);
+      r.last = last_values();
+      rows.push_back(std::move(r));
+    }
+  // Corners of the outer axes, approached together.
+  const std::size_t corners = std::size_t(1) << (rank - 1);
+  for (double f : {0.0, 1e-3, 0.5})
+    for (std::size_t c = 0; c < corners; ++c) {
+      EdgeRow r;
+      for (std::size_t e = 0; e + 1 < rank; ++e) {
+        const lookup::Axis& a = axes[e];
+        const bool hi = (c >> e) & 1;
+        const double t = hi ? a.n - 1 - f : f;
+        r.outer.push_back(f == 0 ? (hi ? a.x_hi : a.x_lo)
+                                 : std::clamp(lookup::invert_transform(a.transform, a.u0 + t * a.du, a.scale), a.x_lo, a.x_hi));
+      }
+      r.last = last_values();
+      rows.push_back(std::move(r));
+    }
+  return rows;
+}
+
 namespace {
 
 // Runs body(i) for i in [0, n) over OpenMP threads; rethrows the first exception.
@@ -100,7 +170,8 @@ BuiltTable dry_run_table(const TableSpec& spec, const RowFunction& row) {
   const auto [setup, per] = spec.cost_row_seconds >= 0 && spec.cost_value_seconds >= 0
                                 ? std::pair<double, double>{spec.cost_row_seconds, spec.cost_value_seconds}
                                 : row_cost(spec, grid, row);
-  const double err_rows = std::max(1, spec.error_rows), err_values = err_rows * std::max(1, spec.error_per_row);
+  double err_rows = std::max(1, spec.error_rows), err_values = err_rows * std::max(1, spec.error_per_row);
+  for (const auto& e : edge_rows(axes, spec.seed)) err_rows += 1, err_values += static_cast<double>(e.last.size());
   double seconds = (static_cast<double>(rows) + err_rows) * setup + (static_cast<double>(values) + err_values) * per;
   // Declared costs are single-core: the estimate is CPU seconds, not depending on the
   // machine's thread count (reproducible decisions); timed samples are wall time of a row.
@@ -256,6 +327,31 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
       worst[rows + i] = std::move(w);
     }
   }
+  // 2c. The shared edge points (edge_rows), one row call per edge row.
+  const std::vector<EdgeRow> edges = edge_rows(axes, spec.seed + 1000003ull * ctx.error_seed + 17);
+  std::size_t n_edge = 0;
+  for (const auto& e : edges) n_edge += e.last.size();
+  {
+    const std::size_t before = worst.size();
+    worst.resize(before + edges.size());
+    parallel_rows(edges.size(), ctx, spec.dataset + ": measure edges", [&](std::size_t i) {
+      const EdgeRow& e = edges[i];
+      std::vector<double> exact(e.last.size()), point(rank);
+      row(e.outer, e.last, exact);
+      Worst w;
+      for (std::size_t j = 0; j < e.last.size(); ++j) {
+        for (int d = 0; d + 1 < rank; ++d) point[d] = e.outer[d];
+        point[rank - 1] = e.last[j];
+        if (!std::isfinite(exact[j]))
+          throw std::runtime_error("table '" + spec.dataset + "': exact value is not finite at an edge error point");
+        const double err = std::abs(table.eval(point) - exact[j]);
+        if (err > w.abs) w.abs = err, w.abs_at = point;
+        if (std::abs(exact[j]) > spec.rel_floor && err / std::abs(exact[j]) > w.rel)
+          w.rel = err / std::abs(exact[j]), w.rel_at = point;
+      }
+      worst[before + i] = std::move(w);
+    });
+  }
   Worst total;
   for (auto& w : worst) {
     if (w.abs > total.abs) total.abs = w.abs, total.abs_at = w.abs_at;
@@ -281,11 +377,12 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
   a["max_rel_error"] = total.rel;
   a["max_abs_error_at"] = where(total.abs_at);
   a["max_rel_error_at"] = where(total.rel_at);
-  a["error_samples"] = static_cast<long long>(rows * per_row + n_targeted);
+  a["error_samples"] = static_cast<long long>(rows * per_row + n_targeted + n_edge);
   std::ostringstream how;
   how << rows << " x " << per_row << " points uniform in the transformed axis coordinates (seed " << spec.seed
       << "), exact values from the generator's numerics";
   if (n_targeted > 0) how << "; plus " << n_targeted << " targeted points (" << spec.targeted_text << ")";
+  how << "; plus " << n_edge << " " << kEdgeSamplingText;
   if (spec.rel_floor > 0) how << "; relative error only where |exact| > " << format_number(spec.rel_floor);
   a["error_sampling"] = how.str();
   // No generation_seconds attribute: a wall-clock measurement would make every run's file
@@ -299,7 +396,7 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
   s.bytes = out.dataset.table.bytes();
   s.max_abs_error = total.abs;
   s.max_rel_error = total.rel;
-  s.error_samples = rows * per_row + n_targeted;
+  s.error_samples = rows * per_row + n_targeted + n_edge;
   s.seconds = seconds;
   return out;
 }

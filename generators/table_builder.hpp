@@ -73,7 +73,7 @@ struct TableSpec {
   int error_per_row = 64;
   unsigned seed = 12345;
   // Targeted error points (physical coordinates, one value per axis), measured in addition
-  // to the random ones: where the family knows the table is hardest (a kink, an edge) and
+  // to the random ones and the shared edge points (edge_rows, always measured): where the family knows the table is hardest (a kink, an edge) and
   // random points rarely land. targeted_text says where they are (error_sampling attribute).
   std::vector<std::vector<double>> targeted_points;
   std::string targeted_text;
@@ -94,6 +94,34 @@ struct BuiltTable {
   tablewrite::DatasetToWrite dataset;
   TableSummary summary;
 };
+
+// Edge-targeted error sampling, shared by every generator (build_table uses it for every
+// table; families with their own error measurement call it too). Random points rarely land
+// where interpolation is worst: at the ends of an axis (one-sided stencils), and at singular
+// ends (c -> 1, mu -> 0, alpha -> 0, p at its limits), which a table axis reaches as one of
+// its ends. Per axis (physical values, inside [x_lo, x_hi], increasing, no duplicates):
+//  - both ends x_lo and x_hi;
+//  - in each end cell, points approaching the end: a fraction f = 1/2, 1/10, 1e-2, 1e-3, 1e-4
+//    of the cell from the end, measured in the transformed coordinate and, where the end is
+//    finite, in the physical one (the two differ most at a singular end: a c axis on
+//    sqrt(1 - c) puts c = 0.99998 at 0.08 of its last cell in c, 0.28 in sqrt(1 - c));
+//  - the midpoints (in the transformed coordinate) of the cells next to the end cells.
+std::vector<double> edge_values(const lookup::Axis& a);
+// The text written to the error_sampling attribute for these points.
+inline constexpr const char* kEdgeSamplingText =
+    "edge points on every axis: both ends, fractions 1/2, 1/10, 1e-2, 1e-3, 1e-4 of each end cell from the end "
+    "(in the transformed and the physical coordinate) and the midpoints of the cells next to the end cells";
+
+// The edge points of a table as rows (outer coordinates, last-axis values), for a row
+// function: every edge value of every outer axis (the other outer coordinates random), and
+// every corner of the outer axes at fractions 0, 1e-3 and 1/2 of their end cells; each row
+// holds every edge value of the last axis plus `random_last` random last-axis values. A 1-D
+// table gives one row with no outer coordinates. Deterministic in seed (mt19937_64 raw bits).
+struct EdgeRow {
+  std::vector<double> outer;
+  std::vector<double> last;
+};
+std::vector<EdgeRow> edge_rows(const std::vector<lookup::Axis>& axes, unsigned long long seed, int random_last = 8);
 
 // Fills the grid (OpenMP over rows), builds the lookup table, measures its error off-grid
 // with the same row function and returns it with the attributes filled in

@@ -126,9 +126,11 @@ py::dict evaluate(const cli::Quantity& q_in, const std::string& method, const st
     }
   }
   if (!error.empty()) throw py::value_error(error);
-  if (substituting && n > 0 && !substituting->substituted())
-    throw py::value_error(q.name + ": dataset " + *dataset + ": no such dataset in the table file(s) that " + q.name +
-                          " reads");
+  if (substituting && n > 0 && !substituting->substituted()) {
+    const std::string why = substituting->refusal();
+    throw py::value_error(q.name + ": dataset " + *dataset + ": " +
+                          (why.empty() ? "no such dataset in the table file(s) that " + q.name + " reads" : why));
+  }
   py::dict result;
   for (std::size_t k = 0; k < no; ++k) {
     py::array_t<double> a(shape);

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
+#include <set>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "cli/foreign_isolation.hpp"
@@ -75,7 +77,17 @@ int run_main(int argc, char** argv) {
   for (const auto& q : all_quantities()) quantities += (quantities.empty() ? "" : ", ") + q.name;
   auto* e = app.add_subcommand("eval", "evaluate a quantity for CSV rows on stdin, CSV on stdout");
   e->add_option("quantity", ev.quantity, "one of: " + quantities)->required();
-  e->add_option("--method", ev.method, "exact | table | fit")->check(CLI::IsMember({"exact", "table", "fit"}));
+  // The accepted methods come from the quantity registry: every method a quantity registers is
+  // reachable (run_eval refuses a method the named quantity lacks, listing the ones it has).
+  std::set<std::string> method_names;
+  for (const auto& q : all_quantities())
+    for (const auto& [name, m] : q.methods) method_names.insert(name);
+  std::string methods_help;
+  for (const auto& name : method_names) methods_help += (methods_help.empty() ? "" : " | ") + name;
+  e->add_option("--method", ev.method,
+                "one of the quantity's methods (default exact; `brdftab eval --help` lists all, the README per quantity): " +
+                    methods_help)
+      ->check(CLI::IsMember(method_names));
   e->add_option("--tables", ev.tables_dir, "table folder (default: tables)");
   e->add_option("--dataset", ev.dataset,
                  "with --method table: read this dataset instead of the default one, e.g. a compact variant "

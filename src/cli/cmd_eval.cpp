@@ -429,8 +429,12 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
       }
     }
     if (tables && !o.dataset.empty() && !material && !tables->substituted()) {
-      err << what << " --dataset " << escape_control(o.dataset) << ": no such dataset in the table file(s) that "
-          << q->name << " reads\n";
+      const std::string why = tables->refusal();
+      if (!why.empty())
+        err << what << " --dataset " << escape_control(o.dataset) << ": " << why << "\n";
+      else
+        err << what << " --dataset " << escape_control(o.dataset) << ": no such dataset in the table file(s) that "
+            << q->name << " reads\n";
       return 2;
     }
     spool_out.copy_to(out);

@@ -75,6 +75,19 @@ std::vector<Quantity> quantities() {
     const lookup::FilipBrdfTable t(ctx.tables->table(std::string(schema::filip::kFile), name));
     out[0] = lookup::filip_brdf(t, in[0], in[1], in[2], in[3], lookup::OutOfDomain::error);
   };
+  // `--dataset filip_brdf_<material>`: that material's 21 parameters (its `filip_parameters`
+  // attribute) pinned; the parameter columns may then be left out.
+  q.material_tables.push_back({std::string(schema::filip::kFile), std::string(schema::filip::kBrdf.name), {},
+                               bind_table_method(q.methods["table"]), {},
+                               [](const lookup::LoadedTable& t, const std::string&) {
+                                 const numerics::FilipParams p =
+                                     gen::filip::parse_parameters_text(t.info.attribute_string("filip_parameters"));
+                                 const auto v = numerics::filip_to_vector(p);
+                                 std::vector<std::pair<std::string, double>> out;
+                                 std::size_t i = 0;
+                                 for (const auto& info : numerics::filip_param_info()) out.emplace_back(info.name, v.at(i++));
+                                 return out;
+                               }});
   return {q};
 }
 

@@ -127,6 +127,23 @@ std::vector<Quantity> quantities() {
       const lookup::HazyGlossAlbedoTable t(ctx.tables->table(std::string(sc::kFile), std::string(d.name) + found->name), d);
       out[0] = lookup::hazy_gloss_albedo(t, in[4], lookup::OutOfDomain::error);
     };
+    // `--dataset hazy_gloss_albedo_<ndf>_<masking>_<material>`: the NDF and masking of the name
+    // and the material's haze attributes pinned.
+    for (int ndf = 0; ndf < 2; ++ndf)
+      for (int compound = 0; compound < 2; ++compound) {
+        const schema::DatasetSchema& d = sc::albedo_dataset(ndf, compound != 0);
+        q.material_tables.push_back({std::string(sc::kFile), std::string(d.name), {}, bind_table_method(q.methods["table"]),
+                                     {{"ndf", double(ndf)}, {"compound", double(compound)}},
+                                     [](const lookup::LoadedTable& t, const std::string&) {
+                                       const lookup::TableInfo& i = t.info;
+                                       return std::vector<std::pair<std::string, double>>{
+                                           {"r_c", i.attribute_number("haze_r_c", NAN)},
+                                           {"alpha_n", i.attribute_number("haze_alpha_n", NAN)},
+                                           {"beta_h", i.attribute_number("haze_beta_h", NAN)},
+                                           {"lambda_h", i.attribute_number("haze_lambda_h", NAN)},
+                                           {"g", i.attribute_number("haze_g", NAN)}};
+                                     }});
+      }
     qs.push_back(std::move(q));
   }
   return qs;

@@ -141,6 +141,18 @@ std::vector<Quantity> quantities() {
     out[2] = v.layer;
     out[3] = v.total();
   };
+  // `--dataset hp_albedo_<lobe>_<material>`: that material (its `hp_material` attribute) pinned.
+  a.material_tables.push_back({std::string(schema::hp::kFile), "hp_albedo_", {}, bind_table_method(a.methods["table"]), {},
+                               [](const lookup::LoadedTable& t, const std::string&) {
+                                 const numerics::HpMaterial m =
+                                     numerics::hp_material_from_text(t.info.attribute_string("hp_material"));
+                                 const double v[] = {m.lambda_um, m.sigma_s_um, m.beta, m.p, m.b_um, m.c,
+                                                     m.n,         m.k,          static_cast<double>(m.layer), m.albedo};
+                                 std::vector<std::pair<std::string, double>> out;
+                                 std::size_t i = 0;
+                                 for (const auto& d : numerics::kHpParameterDomains) out.emplace_back(d.name, v[i++]);
+                                 return out;
+                               }});
   return {b, a};
 }
 

@@ -39,6 +39,8 @@ std::optional<Quantity> material_quantity(const Quantity& q, const std::filesyst
                 "); give that value or leave the column out";
   };
   for (const auto& [param, v] : m->pinned) pin(param, v, "its name");
+  if (m->pinned_from)
+    for (const auto& [param, v] : m->pinned_from(loaded, dataset)) pin(param, v, "its name or attributes");
   for (const auto& [param, attribute] : m->fixed) {
     const auto it = loaded.info.attributes.find(attribute);
     const double* v = it == loaded.info.attributes.end() ? nullptr : std::get_if<double>(&it->second);
@@ -52,6 +54,10 @@ std::optional<Quantity> material_quantity(const Quantity& q, const std::filesyst
     bound(in, result, ctx);
   };
   return out;
+}
+
+std::function<Method(const lookup::LoadedTable&, lookup::TableSet&)> bind_table_method(Method table) {
+  return [table = std::move(table)](const lookup::LoadedTable&, lookup::TableSet&) { return table; };
 }
 
 }  // namespace brdftab::cli

@@ -1,6 +1,7 @@
 // `brdftab eval microfacet_albedo_*`: directional albedo E(mu) (F = 1) with the split-sum pair,
 // and the hemispherical average E_avg, of GGX, Beckmann and generalized Beckmann microfacet
 // BRDFs (exact | table).
+#include <stdexcept>
 #include <string>
 
 #include "cli/quantity.hpp"
@@ -51,6 +52,30 @@ Quantity directional(const std::string& ndf, NdfKind kind) {
         lookup::microfacet_albedo(t, in[0], in[1], g ? in[2] : 1.0, lookup::OutOfDomain::error);
     out[0] = v.e_corr, out[1] = v.e_sep, out[2] = v.split_scale, out[3] = v.split_bias;
   };
+  if (g) {
+    // `--dataset microfacet_albedo_gbeckmann_material_p<P>_<quantity>`: the tables at that p
+    // (all four directional quantities of the material), p pinned from the name.
+    namespace sc = schema::microfacet_albedo;
+    q.material_tables.push_back(
+        {std::string(sc::kFile), std::string(sc::kGBeckmannMaterial.name), {},
+         [](const lookup::LoadedTable&, lookup::TableSet&) -> Method {
+           return [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
+             const lookup::MicrofacetAlbedoTables t = lookup::microfacet_albedo_material_tables(*ctx.tables, in[2]);
+             const lookup::MicrofacetAlbedoValues v = lookup::microfacet_albedo(t, in[0], in[1], in[2], lookup::OutOfDomain::error);
+             out[0] = v.e_corr, out[1] = v.e_sep, out[2] = v.split_scale, out[3] = v.split_bias;
+           };
+         },
+         {},
+         [](const lookup::LoadedTable&, const std::string& dataset) {
+           // "<prefix>p<P>_<quantity>"
+           const std::string rest = dataset.substr(sc::kGBeckmannMaterial.name.size());
+           const auto us = rest.find('_');
+           if (rest.empty() || rest[0] != 'p' || us == std::string::npos)
+             throw std::invalid_argument("dataset '" + dataset + "': expected " + std::string(sc::kGBeckmannMaterial.name) +
+                                         "p<P>_<quantity>");
+           return std::vector<std::pair<std::string, double>>{{"p", std::stod(rest.substr(1, us - 1))}};
+         }});
+  }
   return q;
 }
 

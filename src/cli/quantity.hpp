@@ -52,14 +52,25 @@ struct MaterialTables {
   // Parameters the prefix itself fixes, with their values (e.g. h_ls: {"mode", 1} for
   // "hfunc_ls1_material_"); same rule as `fixed`.
   std::vector<std::pair<std::string, double>> pinned = {};
+  // Parameters the dataset itself fixes, read from its name or attributes (e.g. a material
+  // text attribute, or "p2" in the name); same rule as `fixed`. Empty function: none.
+  std::function<std::vector<std::pair<std::string, double>>(const lookup::LoadedTable&, const std::string& dataset)>
+      pinned_from = nullptr;
 };
+
+// The table method of q (it finds its per-material table by the row's parameters), as a
+// MaterialTables::bind for a dataset whose parameters pinned_from pins: the rows reach the
+// quantity's own lookup with exactly that material's values.
+std::function<Method(const lookup::LoadedTable&, lookup::TableSet&)> bind_table_method(Method table);
 
 struct Quantity {
   std::string name;
   std::string description;
   std::vector<Parameter> parameters;
   std::vector<std::string> outputs;
-  std::map<std::string, Method> methods;  // keys among "exact", "table", "fit"
+  // By name ("exact", "table", "fit", "three_term", ...): `eval --method NAME` accepts every
+  // name registered here (src/cli/app.cpp), tests/test_cli_eval_reachability.cpp runs each.
+  std::map<std::string, Method> methods;
   std::vector<MaterialTables> material_tables;
 };
 

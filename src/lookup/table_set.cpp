@@ -18,6 +18,7 @@ const LoadedTable& TableSet::get(const std::string& file, const std::string& dat
   auto f = files_.find(file);
   if (f == files_.end()) f = files_.emplace(file, VerifiedFile::open(dir_ / file, options_)).first;
   auto loaded = std::make_unique<LoadedTable>(f->second.load_table(dataset));
+  if (!substitute_.empty() && substitute_ == dataset) substituted_ = true;  // NAME is the default table itself
   if (!substitute_.empty() && substitute_ != dataset) {
     const auto names = f->second.list_tables();
     if (std::find(names.begin(), names.end(), substitute_) != names.end()) {
@@ -27,16 +28,22 @@ const LoadedTable& TableSet::get(const std::string& file, const std::string& dat
         for (int d = 0; d < t.rank(); ++d) s += (d ? ", " : "") + t.axis(d).name;
         return s;
       };
+      // NAME stands in only for a request of its kind; a lookup that reads several tables of
+      // the file (E_corr, E_sep, ... of one NDF) has NAME answer the one it matches, the
+      // others keep their default tables. A request NAME cannot stand in for is remembered:
+      // if NAME answers none, refusal() says why.
+      std::string why;
       if (axes(chosen->table) != axes(loaded->table))
-        throw TableFileError("table file '" + (dir_ / file).string() + "': dataset '" + substitute_ + "' has axes (" +
-                             axes(chosen->table) + "), but this lookup reads '" + dataset + "' with axes (" +
-                             axes(loaded->table) + ")");
-      const std::string q_chosen = chosen->info.attribute_string("quantity"),
-                        q_asked = loaded->info.attribute_string("quantity");
-      if (q_chosen != q_asked)
-        throw TableFileError("table file '" + (dir_ / file).string() + "': dataset '" + substitute_ + "' holds \"" +
-                             q_chosen.substr(0, 100) + "\", but this lookup reads '" + dataset + "' holding \"" +
-                             q_asked.substr(0, 100) + "\"");
+        why = "table file '" + (dir_ / file).string() + "': dataset '" + substitute_ + "' has axes (" +
+              axes(chosen->table) + "), but this lookup reads '" + dataset + "' with axes (" + axes(loaded->table) + ")";
+      else if (chosen->info.attribute_string("quantity") != loaded->info.attribute_string("quantity"))
+        why = "table file '" + (dir_ / file).string() + "': dataset '" + substitute_ + "' holds \"" +
+              chosen->info.attribute_string("quantity").substr(0, 100) + "\", but this lookup reads '" + dataset +
+              "' holding \"" + loaded->info.attribute_string("quantity").substr(0, 100) + "\"";
+      if (!why.empty()) {
+        if (refusal_.empty()) refusal_ = why;
+        return *loaded_.emplace(key, std::move(loaded)).first->second;
+      }
       loaded = std::move(chosen);
       substituted_ = true;
     }
@@ -52,6 +59,11 @@ void TableSet::substitute(std::string dataset) {
 bool TableSet::substituted() const {
   std::lock_guard lock(mutex_);
   return substituted_;
+}
+
+std::string TableSet::refusal() const {
+  std::lock_guard lock(mutex_);
+  return refusal_;
 }
 
 std::size_t TableSet::loaded_count() const {

@@ -27,10 +27,13 @@ class TableSet {
   std::size_t loaded_count() const;
   // `eval --dataset NAME`: from now on a request for another table of the file that holds
   // NAME is answered by NAME, provided it has the same axes (names, in order) and the same
-  // `quantity` (a compact variant of a precise table, say); otherwise that request throws
-  // TableFileError saying how they differ. substituted() tells whether NAME answered any request.
+  // `quantity` (a compact variant of a precise table, say); a request NAME cannot stand in
+  // for gets its own table, and the first such mismatch is kept (refusal(): how they
+  // differ). substituted() tells whether NAME answered any request: a caller that needs NAME
+  // to answer refuses with refusal() when it did not.
   void substitute(std::string dataset);
   bool substituted() const;
+  std::string refusal() const;
   const OpenOptions& options() const { return options_; }
 
  private:
@@ -41,6 +44,7 @@ class TableSet {
   std::map<std::string, VerifiedFile> files_;  // each file read and verified once
   std::string substitute_;
   bool substituted_ = false;
+  std::string refusal_;
 };
 
 }  // namespace brdftab::lookup

@@ -15,7 +15,10 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 }
 
-HpLobeProbabilities hp_lobe_probabilities_printed(const HpBrdf& f, const HpIncident& in) {
+namespace {
+// Eq. 50-57 with A_imp = exp(-(k pi sigma_s cos theta_i / lambda)^2): k = 2 as printed in
+// Eq. 57, k = 4 from Eq. 16 at the mirror direction.
+HpLobeProbabilities lobe_probabilities(const HpBrdf& f, const HpIncident& in, double k) {
   const HpMaterial& m = f.material();
   // Eq. 50: F0 = (n^2 + k^2 - 2n + 1) / (n^2 + k^2 + 2n + 1).
   const double F0 = fresnel_conductor_f0(m.n, m.k);
@@ -30,10 +33,19 @@ HpLobeProbabilities hp_lobe_probabilities_printed(const HpBrdf& f, const HpIncid
     ED = m.albedo * (1 - F0) * (1 - F0) * (1 + f.jensen_rd()) / 2;
   }
   const double pC = (EC + ED > 0) ? EC / (EC + ED) : 1.0;  // Eq. 55-56
-  // Eq. 57.
-  const double x = 2 * kPi * m.sigma_s_um / m.lambda_um * in.cos_i;
+  // Eq. 57 (k = 2 as printed); Eq. 16 at o = mirror of i: cos theta_i + cos theta_o = 2 cos theta_i (k = 4).
+  const double x = k * kPi * m.sigma_s_um / m.lambda_um * in.cos_i;
   const double A_imp = std::exp(-x * x);
   return {pC * A_imp, pC * (1 - A_imp), 1 - pC};
+}
+}  // namespace
+
+HpLobeProbabilities hp_lobe_probabilities_printed(const HpBrdf& f, const HpIncident& in) {
+  return lobe_probabilities(f, in, 2);
+}
+
+HpLobeProbabilities hp_lobe_probabilities_corrected(const HpBrdf& f, const HpIncident& in) {
+  return lobe_probabilities(f, in, 4);
 }
 
 HpLobeProbabilities hp_lobe_probabilities_exact(const HpAlbedo& a) {

@@ -9,6 +9,7 @@
 //    (plastic) or Eq. 53-54 (subsurface) for the layer, p_C = E_C / (E_C + E_D) (Eq. 55-56),
 //    then reflection with probability A_imp = exp(-(2 pi sigma_s cos theta_i / lambda)^2)
 //    (Eq. 57), diffraction otherwise;
+//  - corrected: the same with Eq. 57's 2 pi replaced by Eq. 16's 4 pi at the mirror direction;
 //  - exact: probabilities proportional to the exact albedo of each lobe (hp_albedo.hpp or
 //    the per-material tables).
 // Lobe sampling:
@@ -30,6 +31,10 @@ struct HpLobeProbabilities {
 
 // Eq. 50-57 as printed (Eq. 52 with its rho_d/pi; Eq. 53-54 with this form's Jensen A).
 HpLobeProbabilities hp_lobe_probabilities_printed(const HpBrdf& f, const HpIncident& in);
+// Eq. 50-56 as printed with Eq. 57 corrected: A_imp = exp(-(4 pi sigma_s cos theta_i / lambda)^2),
+// Eq. 16's A at the mirror direction (cos theta_o = cos theta_i), the reflection lobe's share
+// of the two lobes' albedo (validate/ERRATA.md; tests/test_hp_eq57.cpp).
+HpLobeProbabilities hp_lobe_probabilities_corrected(const HpBrdf& f, const HpIncident& in);
 // Proportional to the exact lobe albedos; all zero (grazing) gives equal probabilities.
 HpLobeProbabilities hp_lobe_probabilities_exact(const HpAlbedo& a);
 
