@@ -13,6 +13,7 @@
 
 #include "cli/quantity.hpp"
 #include "generators/family.hpp"
+#include "lookup/ghs_sigma_rel_schema.hpp"
 #include "lookup/table_file.hpp"
 
 namespace fs = std::filesystem;
@@ -136,4 +137,16 @@ TEST_CASE("family conformance: every schema dataset and axis has CF units and a 
     }
   CHECK(datasets >= 50);  // all families' datasets were walked
   CHECK(axes >= 100);
+}
+
+TEST_CASE("family conformance: a file written before the CF attributes (formula in units) is still read") {
+  namespace ghs = schema::ghs_sigma_rel;
+  const auto make = [](const std::string& w_units) {
+    return lookup::Table("ghs_sigma_rel2_material_x", {lookup::make_axis("w", lookup::Transform::identity, 0, 1, 8, 1.0, w_units)},
+                         std::vector<double>(8, 0.5), lookup::Storage::float64, lookup::Interpolation::cubic);
+  };
+  CHECK_NOTHROW(schema::check_table(make("1"), ghs::kMaterial));
+  CHECK_NOTHROW(schema::check_table(make(std::string(ghs::kWFormula)), ghs::kMaterial));  // the old spelling
+  CHECK_THROWS_WITH_AS(schema::check_table(make("m"), ghs::kMaterial), doctest::Contains("has units 'm', expected '1'"),
+                       std::invalid_argument);
 }

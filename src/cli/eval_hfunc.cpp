@@ -51,7 +51,7 @@ MaterialTables material_tables(HKind kind, std::vector<std::pair<std::string, do
           [ds](const lookup::LoadedTable& t, lookup::TableSet&) -> Method {
             schema::check_table(t.table, ds);
             const lookup::Table* table = &t.table;
-            return [table](std::span<const double> in, std::span<double> out, const EvalContext&) {
+            return [table](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
               out[0] = table->eval1(in[in.size() - 1], ctx.out_of_domain);
             };
           },

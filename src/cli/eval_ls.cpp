@@ -130,7 +130,7 @@ std::vector<Quantity> quantities() {
                                  schema::check_table(t.table, t.info.attribute_string("quantity"),
                                                      schema::ls::kAlbedoMaterial);
                                  const lookup::Table* table = &t.table;
-                                 return [table](std::span<const double> in, std::span<double> out, const EvalContext&) {
+                                 return [table](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
                                    out[0] = table->eval1(in[1], ctx.out_of_domain);
                                  };
                                }});
