@@ -15,6 +15,7 @@
 
 #include "cli_runner.hpp"
 #include "generators/ls_brdf.hpp"
+#include "lookup/ls_schema.hpp"
 #include "generators/table_builder.hpp"
 #include "lookup/ls_brdf.hpp"
 #include "lookup/table_set.hpp"

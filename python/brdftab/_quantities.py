@@ -52,12 +52,23 @@ def _parameter_units(name: str) -> str:
         return "rad"
     if name.endswith("_um"):
         return "um"
+    if name in ("sigma", "tau", "lambda"):
+        return "a length, in one unit for sigma, tau and lambda"
     return "1"
 
 
-def _output_units(name: str) -> str:
-    """BRDF values (f, f_*) in sr-1; the other outputs are dimensionless."""
-    return "sr-1" if name == "f" or name.startswith("f_") else "1"
+# Outputs that are densities per steradian besides the BRDF values f, f_*.
+PER_STERADIAN = {("ls_phase", "p")}
+# Outputs that are lengths (in the unit of the lengths given).
+LENGTHS = {("htsg_sigma0", "sigma0")}
+
+
+def _output_units(quantity: str, name: str) -> str:
+    """BRDF values (f, f_*) and phase functions in sr-1; lengths in the input's length unit;
+    the other outputs are dimensionless."""
+    if (quantity, name) in LENGTHS:
+        return "a length, in the unit of sigma and tau"
+    return "sr-1" if name == "f" or name.startswith("f_") or (quantity, name) in PER_STERADIAN else "1"
 
 
 def _result_type(pyname: str, outputs):
@@ -85,10 +96,10 @@ def _doc(pyname, info, names, result):
               "", "Returns", "-------"]
     outs = result._fields
     if len(outs) == 1:
-        lines += [f"{outs[0]} : ndarray", f"    units {_output_units(info['outputs'][0])}"]
+        lines += [f"{outs[0]} : ndarray", f"    units {_output_units(info['name'], info['outputs'][0])}"]
     else:
         lines += [f"{result.__name__} : named tuple of ndarrays"]
-        lines += [f"    {o}: units {_output_units(raw)}" for o, raw in zip(outs, info["outputs"])]
+        lines += [f"    {o}: units {_output_units(info['name'], raw)}" for o, raw in zip(outs, info["outputs"])]
     lines += ["", "float32 input gives float32 output (computed in float64); broadcasting as NumPy."]
     return "\n".join(lines)
 

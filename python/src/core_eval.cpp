@@ -47,8 +47,9 @@ std::shared_ptr<lookup::TableSet> tables_for(const std::filesystem::path& dir) {
   static std::mutex m;
   static auto* sets = new std::map<std::string, std::shared_ptr<lookup::TableSet>>;
   std::lock_guard lock(m);
-  auto& s = (*sets)[std::filesystem::absolute(dir).string()];
-  if (!s) s = std::make_shared<lookup::TableSet>(dir);
+  const std::filesystem::path abs = std::filesystem::absolute(dir);  // later chdir()s do not move it
+  auto& s = (*sets)[abs.string()];
+  if (!s) s = std::make_shared<lookup::TableSet>(abs);
   return s;
 }
 

@@ -68,9 +68,10 @@ def test_one_output_is_an_array_several_a_named_tuple():
     assert r._fields == ("E_corr", "E_sep", "split_scale", "split_bias")
     e_corr, e_sep, scale, bias = r  # unpacks like a tuple
     np.testing.assert_array_equal(e_corr, r.E_corr)
-    # The split-sum pair adds up to E_sep (F = 1: scale + bias = Integral f cos) -- a closed
-    # relation between independently computed outputs.
-    np.testing.assert_allclose(scale + bias, e_sep, rtol=1e-9)
+    # The split-sum pair adds up to E (height-correlated G2): scale + bias = Integral f cos at
+    # F = 1, the weights (1 - (1 - cos)^5) and (1 - cos)^5 summing to 1 (separate quadratures).
+    np.testing.assert_allclose(scale + bias, e_corr, rtol=1e-12)
+    assert np.all(e_sep < e_corr)  # the separable G1 G1 masks more than the correlated G2
 
 
 def test_float32_in_float32_out_computed_in_float64():
@@ -81,7 +82,7 @@ def test_float32_in_float32_out_computed_in_float64():
     # Computed in float64 at the float32 inputs, then rounded once.
     ref = brdftab.h_iso(c.astype(np.float64), mu.astype(np.float64))
     np.testing.assert_array_equal(out, ref.astype(np.float32))
-    assert brdftab.h_iso(np.float32(0.5), 0.5).dtype == np.float32  # a Python float does not promote
+    assert brdftab.h_iso(np.float32([0.5]), 0.5).dtype == np.float32  # a Python float does not promote an array
     assert brdftab.h_iso(c, mu.astype(np.float64)).dtype == np.float64
     assert brdftab.h_iso(1, 1).dtype == np.float64  # integers give float64, as in SciPy
     t = brdftab.Table(os.path.join(TABLES, "demo.h5"), "demo_exp_cos")

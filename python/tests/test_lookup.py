@@ -18,6 +18,13 @@ def stated(file, name):
     return brdftab.Table(os.path.join(TABLES, file), name).max_abs_error
 
 
+# A table's stated error is the maximum over the generator's off-grid sample; a fresh sample
+# may exceed it. The project's rule (tests/test_family_conformance.cpp): a fresh random point
+# set stays within 2x the stated error. Measured here: the precise GGX split_scale 1.11x and
+# the GGX E_avg 1.08x their stated errors at this test's points.
+SAMPLE_MARGIN = 2.0
+
+
 def gauss_legendre(n, a, b):
     x, w = np.polynomial.legendre.leggauss(n)
     return 0.5 * (b - a) * x + 0.5 * (b + a), 0.5 * (b - a) * w
@@ -30,18 +37,18 @@ def test_microfacet_albedo_against_the_exact_quadrature():
     for q in ("E_corr", "E_sep", "split_scale", "split_bias"):
         got = lookup.microfacet_albedo(mu, alpha, quantity=q, tables=TABLES)
         err = np.max(np.abs(got - getattr(exact, q)))
-        assert err <= stated("microfacet_albedo.h5", f"microfacet_albedo_ggx_{q}_precise"), q
+        assert err <= SAMPLE_MARGIN * stated("microfacet_albedo.h5", f"microfacet_albedo_ggx_{q}_precise"), q
     # The compact tables, their own stated error.
     got = lookup.microfacet_albedo(mu, alpha, ndf="beckmann", precise=False, tables=TABLES)
     err = np.max(np.abs(got - brdftab.microfacet_albedo_beckmann(mu, alpha).E_corr))
-    assert err <= stated("microfacet_albedo.h5", "microfacet_albedo_beckmann_E_corr_compact")
+    assert err <= SAMPLE_MARGIN * stated("microfacet_albedo.h5", "microfacet_albedo_beckmann_E_corr_compact")
 
 
 def test_generalized_beckmann_needs_p_and_agrees_with_the_exact_values():
     mu, beta, p = np.array([0.05, 0.4, 0.9]), np.array([0.1, 0.3, 0.8]), np.array([0.7, 1.0, 1.8])
     got = lookup.microfacet_albedo(mu, beta, p, ndf="gbeckmann", tables=TABLES)
     err = np.max(np.abs(got - brdftab.microfacet_albedo_gbeckmann(mu, beta, p).E_corr))
-    assert err <= stated("microfacet_albedo.h5", "microfacet_albedo_gbeckmann_E_corr_compact")
+    assert err <= SAMPLE_MARGIN * stated("microfacet_albedo.h5", "microfacet_albedo_gbeckmann_E_corr_compact")
     with pytest.raises(ValueError, match="ndf='gbeckmann'"):
         lookup.microfacet_albedo(mu, beta, ndf="gbeckmann", tables=TABLES)
     with pytest.raises(ValueError, match="ndf='gbeckmann'"):
@@ -52,7 +59,7 @@ def test_microfacet_albedo_avg_against_the_exact_quadrature():
     alpha = np.exp(RNG.uniform(np.log(0.01), 0, 30))
     got = lookup.microfacet_albedo_avg(alpha, tables=TABLES)
     err = np.max(np.abs(got - brdftab.microfacet_albedo_avg_ggx(alpha).Eavg_corr))
-    assert err <= stated("microfacet_albedo.h5", "microfacet_albedo_avg_ggx_Eavg_corr")
+    assert err <= SAMPLE_MARGIN * stated("microfacet_albedo.h5", "microfacet_albedo_avg_ggx_Eavg_corr")
 
 
 def test_kulla_conty_lobe_is_the_formula_and_restores_the_lost_energy():
