@@ -34,7 +34,9 @@ class CMakeBuild(build_ext):
         build_dir = Path(os.environ.get("BRDFTAB_CMAKE_BUILD_DIR") or Path(self.build_temp).resolve() / "cmake")
         build_dir.mkdir(parents=True, exist_ok=True)
         subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
-                        f"-DPython_EXECUTABLE={sys.executable}"], check=True)
+                        f"-DPython_EXECUTABLE={sys.executable}",
+                        # the lookup library linked in statically: the installed module needs no other .so
+                        "-DBRDFTAB_LOOKUP_SHARED=OFF"], check=True)
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL") or str(os.cpu_count() or 1)
         subprocess.run(["cmake", "--build", str(build_dir), "--target", "brdftab_python", "-j", jobs], check=True)
         suffix = sysconfig.get_config_var("EXT_SUFFIX")
