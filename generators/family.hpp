@@ -53,7 +53,7 @@ class Family {
   virtual std::vector<BuiltTable> build(const nlohmann::json& entry, const GenerateContext& ctx) const = 0;
   // Builds and writes ctx.out_dir / file() atomically.
   std::vector<TableSummary> generate(const nlohmann::json& entry, const GenerateContext& ctx) const {
-    return write_built_tables(file(), build(entry, ctx), ctx);
+    return write_built_tables(file(), datasets(), build(entry, ctx), ctx);
   }
   // A cheap entry for tests, and the same with narrower ranges (must give smaller tables).
   virtual nlohmann::json test_entry() const = 0;

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include "generators/preflight.hpp"
@@ -401,8 +402,8 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
   return out;
 }
 
-std::vector<TableSummary> write_built_tables(const std::string& file, std::vector<BuiltTable> tables,
-                                             const GenerateContext& ctx) {
+std::vector<TableSummary> write_built_tables(const std::string& file, std::span<const schema::DatasetSchema> schemas,
+                                             std::vector<BuiltTable> tables, const GenerateContext& ctx) {
   std::vector<tablewrite::DatasetToWrite> datasets;
   std::vector<TableSummary> summaries;
   std::string generator;
@@ -410,6 +411,15 @@ std::vector<TableSummary> write_built_tables(const std::string& file, std::vecto
     t.summary.file = file;
     summaries.push_back(t.summary);
     if (auto g = std::get_if<std::string>(&t.dataset.attributes["generator"])) generator = *g;
+    const std::string& name = t.dataset.table.name();
+    const auto s = std::find_if(schemas.begin(), schemas.end(), [&](const schema::DatasetSchema& d) { return d.matches(name); });
+    if (s == schemas.end()) throw std::invalid_argument("dataset " + name + " is in no schema dataset of " + file);
+    t.dataset.units = std::string(s->units);
+    t.dataset.long_name = std::string(s->long_name);
+    t.dataset.axis_text.clear();
+    for (int d = 0; d < s->rank; ++d)
+      t.dataset.axis_text.push_back({std::string(s->axes[static_cast<std::size_t>(d)].long_name),
+                                     std::string(s->axes[static_cast<std::size_t>(d)].formula)});
     datasets.push_back(std::move(t.dataset));
   }
   std::map<std::string, tablewrite::AttributeValue> file_attributes{{"generator", generator}};

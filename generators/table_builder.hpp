@@ -129,8 +129,10 @@ std::vector<EdgeRow> edge_rows(const std::vector<lookup::Axis>& axes, unsigned l
 BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const GenerateContext& ctx);
 
 // Writes the built tables to ctx.out_dir / file atomically and returns their summaries.
-std::vector<TableSummary> write_built_tables(const std::string& file, std::vector<BuiltTable> tables,
-                                             const GenerateContext& ctx);
+// Each table's CF `units` and `long_name` (and its axes' `long_name` and `formula`) come from
+// the dataset of `schemas` it matches; a table that matches none is refused (std::invalid_argument).
+std::vector<TableSummary> write_built_tables(const std::string& file, std::span<const schema::DatasetSchema> schemas,
+                                             std::vector<BuiltTable> tables, const GenerateContext& ctx);
 
 // Physical grid values of an axis (regular in the transformed coordinate).
 std::vector<double> axis_values(const AxisSpec& spec);

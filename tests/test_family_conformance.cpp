@@ -13,6 +13,7 @@
 
 #include "cli/quantity.hpp"
 #include "generators/family.hpp"
+#include "lookup/ghs_sigma_rel_schema.hpp"
 #include "lookup/table_file.hpp"
 
 namespace fs = std::filesystem;
@@ -92,6 +93,9 @@ TEST_CASE("family conformance: every family has its parts, and they keep the sha
         CHECK(!t.table.axis(d).units.empty());
         CHECK(!t.info.attribute_string("max_abs_error").empty());
       }
+      // CF-1.8: the values' units and long_name as the schema declares them.
+      CHECK(t.info.attribute_string("units") == s->units);
+      CHECK(t.info.attribute_string("long_name") == s->long_name);
     }
   }
   fs::remove_all(dir);
@@ -107,5 +111,42 @@ TEST_CASE("family conformance: a table with the wrong axes is refused by the sch
                                lookup::make_axis("x", lookup::Transform::identity, 0, 1, 8, 1.0, "rad")},
                               std::vector<double>(64, 0.5), lookup::Storage::float64, lookup::Interpolation::cubic);
   CHECK_THROWS_WITH_AS(schema::check_table(swapped, schemas[0]), doctest::Contains("axis 0 is 'y', expected 'x'"),
+                       std::invalid_argument);
+}
+
+// CF-1.8 (lookup/schema.hpp): every dataset and every axis of every family schema declares
+// UDUNITS units and a long_name, so that every file a generator writes carries them.
+TEST_CASE("family conformance: every schema dataset and axis has CF units and a long_name") {
+  const auto udunits = [](std::string_view u) { return u == "1" || u == "rad" || u == "sr-1"; };
+  std::size_t datasets = 0, axes = 0;
+  for (const auto& f : gen::all_families())
+    for (const auto& d : f->datasets()) {
+      INFO("family " << f->name() << ", dataset " << d.name);
+      ++datasets;
+      CHECK(udunits(d.units));
+      CHECK(!d.long_name.empty());
+      REQUIRE(d.rank >= 1);
+      REQUIRE(d.rank <= static_cast<int>(d.axes.size()));
+      for (int i = 0; i < d.rank; ++i) {
+        const auto& a = d.axes[static_cast<std::size_t>(i)];
+        INFO("axis " << a.name);
+        ++axes;
+        CHECK(udunits(a.units));
+        CHECK(!a.long_name.empty());
+      }
+    }
+  CHECK(datasets >= 50);  // all families' datasets were walked
+  CHECK(axes >= 100);
+}
+
+TEST_CASE("family conformance: a file written before the CF attributes (formula in units) is still read") {
+  namespace ghs = schema::ghs_sigma_rel;
+  const auto make = [](const std::string& w_units) {
+    return lookup::Table("ghs_sigma_rel2_material_x", {lookup::make_axis("w", lookup::Transform::identity, 0, 1, 8, 1.0, w_units)},
+                         std::vector<double>(8, 0.5), lookup::Storage::float64, lookup::Interpolation::cubic);
+  };
+  CHECK_NOTHROW(schema::check_table(make("1"), ghs::kMaterial));
+  CHECK_NOTHROW(schema::check_table(make(std::string(ghs::kWFormula)), ghs::kMaterial));  // the old spelling
+  CHECK_THROWS_WITH_AS(schema::check_table(make("m"), ghs::kMaterial), doctest::Contains("has units 'm', expected '1'"),
                        std::invalid_argument);
 }

@@ -148,7 +148,7 @@ TEST_CASE("ghs_sigma_rel2_batch and the material batch against their scalar look
   const GhsSigmaRelGrid g(grid_t);
   const double bound = log_bound(grid_t.table, {0, 2});
   // A material table built here (the default file has none): R(w) = 1 + w^2 on 33 points.
-  const Axis w = make_axis("w", Transform::identity, 0.0, 1.0, 33, 1.0, std::string(schema::ghs_sigma_rel::kWUnits));
+  const Axis w = make_axis("w", Transform::identity, 0.0, 1.0, 33, 1.0, std::string(schema::ghs_sigma_rel::kW.units));
   std::vector<double> v(33);
   for (int i = 0; i < 33; ++i) v[i] = 1 + w.value(i) * w.value(i);
   const Table mt("ghs_sigma_rel2_material_test", {w}, v, Storage::float64, Interpolation::cubic);

@@ -15,6 +15,7 @@
 
 #include "cli_runner.hpp"
 #include "generators/ls_brdf.hpp"
+#include "lookup/ls_schema.hpp"
 #include "generators/table_builder.hpp"
 #include "lookup/ls_brdf.hpp"
 #include "lookup/table_set.hpp"
@@ -136,7 +137,7 @@ TEST_CASE("ls_brdf tables: generic table through eval ls_brdf --method table") {
     row << p[0] << "," << p[1] << "," << p[2] << "," << p[3] << "\n";
     csv += row.str();
   }
-  gen::write_built_tables("ls.h5", std::move(built), ctx);
+  gen::write_built_tables("ls.h5", schema::ls::kDatasets, std::move(built), ctx);
   const auto r = testing::run_cli("eval ls_brdf --method table --tables '" + dir.string() + "'", csv);
   REQUIRE_MESSAGE(r.status == 0, r.err);
   std::istringstream out(r.out);

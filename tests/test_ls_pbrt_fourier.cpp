@@ -22,6 +22,7 @@
 
 #include "cli_runner.hpp"
 #include "generators/ls_brdf.hpp"
+#include "lookup/ls_schema.hpp"
 #include "generators/table_builder.hpp"
 #include "numerics/ls_half_space.hpp"
 
@@ -146,7 +147,7 @@ TEST_CASE("ls pbrt-fourier export: an independent SCATFUN reader reproduces the 
   fs::create_directories(dir_out);
   gen::GenerateContext ctx;
   ctx.out_dir = dir_out;
-  gen::write_built_tables("ls.h5", gen::ls::build_brdf_material("probe", c, 0.5, {}, {1, 8}, ctx), ctx);
+  gen::write_built_tables("ls.h5", schema::ls::kDatasets, gen::ls::build_brdf_material("probe", c, 0.5, {}, {1, 8}, ctx), ctx);
   const auto r = testing::run_cli("export '" + (dir_out / "ls.h5").string() +
                                   "' ls_brdf_modes_material_probe --format pbrt-fourier --out '" + dir_out.string() + "'");
   REQUIRE_MESSAGE(r.status == 0, r.err);

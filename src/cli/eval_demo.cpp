@@ -21,7 +21,7 @@ std::vector<Quantity> quantities() {
   };
   q.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
     const auto& t = ctx.tables->table(std::string(schema::demo::kFile), std::string(schema::demo::kExpCos.name));
-    out[0] = t.eval(in, lookup::OutOfDomain::error);
+    out[0] = t.eval(in, ctx.out_of_domain);
   };
   return {q};
 }

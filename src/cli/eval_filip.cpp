@@ -73,7 +73,7 @@ std::vector<Quantity> quantities() {
     numerics::check_filip_params(p);
     const std::string name = dataset_for(ctx, p);
     const lookup::FilipBrdfTable t(ctx.tables->table(std::string(schema::filip::kFile), name));
-    out[0] = lookup::filip_brdf(t, in[0], in[1], in[2], in[3], lookup::OutOfDomain::error);
+    out[0] = lookup::filip_brdf(t, in[0], in[1], in[2], in[3], ctx.out_of_domain);
   };
   // `--dataset filip_brdf_<material>`: that material's 21 parameters (its `filip_parameters`
   // attribute) pinned; the parameter columns may then be left out.

@@ -81,7 +81,7 @@ std::vector<Quantity> quantities() {
     };
     q.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
       const lookup::FresnelDrTable t(table(ctx, schema::fresnel::kDr));
-      out[0] = lookup::fresnel_dr(t, in[0], lookup::OutOfDomain::error);
+      out[0] = lookup::fresnel_dr(t, in[0], ctx.out_of_domain);
     };
     qs.push_back(std::move(q));
   }
@@ -110,7 +110,7 @@ std::vector<Quantity> quantities() {
       const lookup::Table* below = side(schema::fresnel::kAvgConductorBelow);
       if (!above && !below) (void)table(ctx, schema::fresnel::kAvgConductorAbove);  // throws naming the table
       const lookup::FresnelAvgConductorTable t(above, below);
-      out[0] = lookup::fresnel_avg_conductor(t, in[0], in[1], lookup::OutOfDomain::error);
+      out[0] = lookup::fresnel_avg_conductor(t, in[0], in[1], ctx.out_of_domain);
     };
     qs.push_back(std::move(q));
   }

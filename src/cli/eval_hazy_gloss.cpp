@@ -125,7 +125,7 @@ std::vector<Quantity> quantities() {
       }
       const schema::DatasetSchema& d = sc::albedo_dataset(in[6] == 0.0 ? 0 : 1, in[7] != 0.0);
       const lookup::HazyGlossAlbedoTable t(ctx.tables->table(std::string(sc::kFile), std::string(d.name) + found->name), d);
-      out[0] = lookup::hazy_gloss_albedo(t, in[4], lookup::OutOfDomain::error);
+      out[0] = lookup::hazy_gloss_albedo(t, in[4], ctx.out_of_domain);
     };
     // `--dataset hazy_gloss_albedo_<ndf>_<masking>_<material>`: the NDF and masking of the name
     // and the material's haze attributes pinned.

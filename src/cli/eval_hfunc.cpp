@@ -38,7 +38,7 @@ double table_h(HKind kind, double c, double mu, const EvalContext& ctx) {
   const schema::DatasetSchema ds = schema::hfunc::dataset(kind, false);
   const lookup::Table& t = ctx.tables->table(std::string(schema::hfunc::kFile), std::string(ds.name));
   schema::check_table(t, ds);
-  return t.eval2(c, mu, lookup::OutOfDomain::error);
+  return t.eval2(c, mu, ctx.out_of_domain);
 }
 
 HKind ls_kind(double mode) { return mode == 0 ? HKind::ls0 : mode == 1 ? HKind::ls1 : HKind::ls2; }
@@ -51,8 +51,8 @@ MaterialTables material_tables(HKind kind, std::vector<std::pair<std::string, do
           [ds](const lookup::LoadedTable& t, lookup::TableSet&) -> Method {
             schema::check_table(t.table, ds);
             const lookup::Table* table = &t.table;
-            return [table](std::span<const double> in, std::span<double> out, const EvalContext&) {
-              out[0] = table->eval1(in[in.size() - 1], lookup::OutOfDomain::error);
+            return [table](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
+              out[0] = table->eval1(in[in.size() - 1], ctx.out_of_domain);
             };
           },
           std::move(pinned)};

@@ -135,7 +135,7 @@ std::vector<Quantity> quantities() {
     const numerics::HpMaterial m = numerics::hp_material_from_values(in.data());
     const std::string name = find_material(ctx, m);
     const lookup::HpAlbedoMaterial t(*ctx.tables, std::string(schema::hp::kFile), name);
-    const lookup::HpAlbedoParts v = t(in[10], lookup::OutOfDomain::error);
+    const lookup::HpAlbedoParts v = t(in[10], ctx.out_of_domain);
     out[0] = v.reflection;
     out[1] = v.diffraction;
     out[2] = v.layer;

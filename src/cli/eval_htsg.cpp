@@ -88,7 +88,7 @@ std::vector<Quantity> quantities() {
     q.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
       const lookup::HtsgDistributionTable t(ctx.tables->table(std::string(schema::htsg::kFile),
                                                               std::string(schema::htsg::kLogDistribution.name)));
-      out[0] = lookup::htsg_distribution(t, in[0], in[1], lookup::OutOfDomain::error);
+      out[0] = lookup::htsg_distribution(t, in[0], in[1], ctx.out_of_domain);
     };
     qs.push_back(std::move(q));
   }

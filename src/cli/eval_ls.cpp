@@ -84,7 +84,7 @@ std::vector<Quantity> quantities() {
     out[0] = albedo_solver(in[0]).spherical();
   };
   kd.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
-    out[0] = lookup::ls_kd(lookup::LsKdTable(table(ctx, schema::ls::kKd)), in[0], lookup::OutOfDomain::error);
+    out[0] = lookup::ls_kd(lookup::LsKdTable(table(ctx, schema::ls::kKd)), in[0], ctx.out_of_domain);
   };
   kd.methods["fit"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
     out[0] = numerics::deon_kd_from_c(in[0]);
@@ -118,7 +118,7 @@ std::vector<Quantity> quantities() {
   };
   a.methods["table"] = [](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
     out[0] = lookup::ls_plane_albedo(lookup::LsAlbedoTable(table(ctx, schema::ls::kAlbedo)), in[0], in[1],
-                                     lookup::OutOfDomain::error);
+                                     ctx.out_of_domain);
   };
   a.methods["three_term"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
     out[0] = three_term(in[0]).plane_albedo(in[1]);
@@ -130,8 +130,8 @@ std::vector<Quantity> quantities() {
                                  schema::check_table(t.table, t.info.attribute_string("quantity"),
                                                      schema::ls::kAlbedoMaterial);
                                  const lookup::Table* table = &t.table;
-                                 return [table](std::span<const double> in, std::span<double> out, const EvalContext&) {
-                                   out[0] = table->eval1(in[1], lookup::OutOfDomain::error);
+                                 return [table](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
+                                   out[0] = table->eval1(in[1], ctx.out_of_domain);
                                  };
                                }});
 

@@ -49,7 +49,7 @@ Quantity directional(const std::string& ndf, NdfKind kind) {
   q.methods["table"] = [ndf, g](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
     const lookup::MicrofacetAlbedoTables t = tables_for(ctx, ndf);
     const lookup::MicrofacetAlbedoValues v =
-        lookup::microfacet_albedo(t, in[0], in[1], g ? in[2] : 1.0, lookup::OutOfDomain::error);
+        lookup::microfacet_albedo(t, in[0], in[1], g ? in[2] : 1.0, ctx.out_of_domain);
     out[0] = v.e_corr, out[1] = v.e_sep, out[2] = v.split_scale, out[3] = v.split_bias;
   };
   if (g) {
@@ -94,7 +94,7 @@ Quantity average(const std::string& ndf, NdfKind kind) {
   q.methods["table"] = [ndf, g](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
     const lookup::MicrofacetAlbedoTables t = tables_for(ctx, ndf);
     const lookup::MicrofacetAlbedoAvgValues a =
-        lookup::microfacet_albedo_avg(t, in[0], g ? in[1] : 1.0, lookup::OutOfDomain::error);
+        lookup::microfacet_albedo_avg(t, in[0], g ? in[1] : 1.0, ctx.out_of_domain);
     out[0] = a.eavg_corr, out[1] = a.eavg_sep;
   };
   return q;

@@ -36,7 +36,7 @@ std::vector<Quantity> quantities() {
     const lookup::SmithGBeckmannTable t(ctx.tables->table(std::string(schema::smith_gbeckmann::kFile),
                                                           std::string(schema::smith_gbeckmann::kG1Precise.name)));
     const double p = in[0], a = in[1];
-    const double g1 = lookup::smith_gbeckmann_g1(t, a, p, lookup::OutOfDomain::error);
+    const double g1 = lookup::smith_gbeckmann_g1(t, a, p, ctx.out_of_domain);
     out[1] = g1;
     out[0] = g1 > 0.0 ? 1.0 / g1 - 1.0 : std::numeric_limits<double>::infinity();
   };
@@ -47,8 +47,8 @@ std::vector<Quantity> quantities() {
          schema::check_table(t.table, t.info.attribute_string("quantity"), schema::smith_gbeckmann::kG1Material);
          const lookup::Table* table = &t.table;
          const double m1 = schema::smith_gbeckmann::first_moment(t.info.attribute_number("p", NAN));
-         return [table, m1](std::span<const double> in, std::span<double> out, const EvalContext&) {
-           const double g1 = table->eval1(in[1] * m1, lookup::OutOfDomain::error);
+         return [table, m1](std::span<const double> in, std::span<double> out, const EvalContext& ctx) {
+           const double g1 = table->eval1(in[1] * m1, ctx.out_of_domain);
            out[1] = g1;
            out[0] = g1 > 0.0 ? 1.0 / g1 - 1.0 : std::numeric_limits<double>::infinity();
          };

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "lookup/table.hpp"
+
 namespace brdftab::lookup {
 class TableSet;
 struct LoadedTable;
@@ -29,6 +31,9 @@ struct Parameter {
 
 struct EvalContext {
   lookup::TableSet* tables = nullptr;  // opened lazily from --tables DIR
+  // Table methods outside their table's range: error (lookup::DomainError, the CLI's rule) or
+  // clamp to the nearest edge (the Python bindings' errors="clamp"). Value-initialized: error.
+  lookup::OutOfDomain out_of_domain = lookup::OutOfDomain::error;
 };
 
 // Computes one row: in has one value per parameter (already domain-checked),

@@ -8,10 +8,10 @@
 namespace brdftab::schema::demo {
 
 inline constexpr std::string_view kFile = "demo.h5";
-inline constexpr AxisSchema kX{"x", lookup::Transform::x_over_k_plus_x, "1"};  // k = 1
+inline constexpr AxisSchema kX{"x", lookup::Transform::x_over_k_plus_x, "1", "demonstration argument x"};  // k = 1
 inline constexpr double kXScale = 1.0;
-inline constexpr AxisSchema kY{"y", lookup::Transform::identity, "rad"};
-inline constexpr DatasetSchema kExpCos{"demo_exp_cos", false, "exp(-x) cos(y)", 2, {kX, kY}};
+inline constexpr AxisSchema kY{"y", lookup::Transform::identity, "rad", "demonstration angle y"};
+inline constexpr DatasetSchema kExpCos{"demo_exp_cos", false, "exp(-x) cos(y)", 2, {kX, kY}, "1", "demonstration function exp(-x) cos(y)"};
 inline constexpr std::array kDatasets{kExpCos};
 
 // Dataset attributes of this family beyond the shared ones (see schema::AttributeRule): none.

@@ -26,27 +26,30 @@
 namespace brdftab::schema::filip {
 
 inline constexpr std::string_view kFile = "filip.h5";
-inline constexpr AxisSchema kThetaI{"theta_i", lookup::Transform::identity, "rad"};
-inline constexpr AxisSchema kPhiI{"phi_i", lookup::Transform::identity, "rad"};
-inline constexpr AxisSchema kThetaO{"theta_o", lookup::Transform::identity, "rad"};
-inline constexpr AxisSchema kPhiO{"phi_o", lookup::Transform::identity, "rad"};
-inline constexpr AxisSchema kThetaLo{"theta_o_lo", lookup::Transform::identity, "rad"};
+inline constexpr AxisSchema kThetaI{"theta_i", lookup::Transform::identity, "rad", "polar angle of incidence"};
+inline constexpr AxisSchema kPhiI{"phi_i", lookup::Transform::identity, "rad", "azimuth of incidence"};
+inline constexpr AxisSchema kThetaO{"theta_o", lookup::Transform::identity, "rad", "polar angle of reflection"};
+inline constexpr AxisSchema kPhiO{"phi_o", lookup::Transform::identity, "rad", "azimuth of reflection"};
+inline constexpr AxisSchema kThetaLo{"theta_o_lo", lookup::Transform::identity, "rad", "lower edge of the polar-angle strip of reflection"};
 inline constexpr DatasetSchema kBrdf{
     "filip_brdf_", true,
     "ln(f + 1e-10 /sr), f(theta_i, phi_i, theta_o, phi_o) of the Filip et al. highlight-stencil BRDF, material '", 4,
-    {kThetaI, kPhiI, kThetaO, kPhiO}};
+    {kThetaI, kPhiI, kThetaO, kPhiO},
+    "1",  // ln of f in sr-1
+    "natural logarithm of (BRDF in sr-1 + 1e-10)"};
 // f = exp(g) - kLogFloor (1/sr): the floor keeps g finite where f = 0.
 inline constexpr double kLogFloor = 1e-10;
 inline constexpr DatasetSchema kAlbedo{
     "filip_albedo_", true, "ln A(theta_i, phi_i): ln of the albedo over theta_o <= theta_max of the Filip et al. BRDF, material '",
-    2, {kThetaI, kPhiI}};
+    2, {kThetaI, kPhiI}, "1", "natural logarithm of the directional albedo"};
 inline constexpr DatasetSchema kMarginal{
     "filip_marginal_cdf_", true, "C(theta_i, phi_i, theta_o): marginal CDF in theta_o of f cos, material '", 3,
-    {kThetaI, kPhiI, kThetaO}};
+    {kThetaI, kPhiI, kThetaO}, "1", "marginal cumulative distribution in theta_o of BRDF times cosine"};
 inline constexpr DatasetSchema kConditional{
     "filip_conditional_cdf_", true,
     "D(theta_i, phi_i, theta_o_lo, phi_o): CDF in phi_o of f cos over a theta_o strip, material '", 4,
-    {kThetaI, kPhiI, kThetaLo, kPhiO}};
+    {kThetaI, kPhiI, kThetaLo, kPhiO}, "1",
+    "conditional cumulative distribution in phi_o of BRDF times cosine over a theta_o strip"};
 inline constexpr std::array kDatasets{kBrdf, kAlbedo, kMarginal, kConditional};
 
 // Dataset attributes of this family (see schema::AttributeRule): the material's parameter

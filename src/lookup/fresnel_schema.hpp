@@ -38,20 +38,21 @@
 namespace brdftab::schema::fresnel {
 
 inline constexpr std::string_view kFile = "fresnel.h5";
-inline constexpr AxisSchema kEta{"eta", lookup::Transform::log_x_minus_1, "1"};
-inline constexpr AxisSchema kN{"n", lookup::Transform::log_x_minus_1, "1"};
-inline constexpr AxisSchema kInvN{"inv_n", lookup::Transform::log_x_minus_1, "1"};
-inline constexpr AxisSchema kK{"k", lookup::Transform::fourth_root, "1"};
+inline constexpr AxisSchema kEta{"eta", lookup::Transform::log_x_minus_1, "1", "relative index of refraction of the dielectric"};
+inline constexpr AxisSchema kN{"n", lookup::Transform::log_x_minus_1, "1", "real part of the relative complex index of refraction"};
+inline constexpr AxisSchema kInvN{"inv_n", lookup::Transform::log_x_minus_1, "1", "reciprocal 1/n of the real part of the relative index of refraction"};
+inline constexpr AxisSchema kK{"k", lookup::Transform::fourth_root, "1", "extinction coefficient (imaginary part of the relative index)"};
 inline constexpr DatasetSchema kDr{
     "fresnel_dr", false, "F_dr(eta): diffuse (cosine-weighted hemispherical) Fresnel reflectance of a dielectric", 1,
-    {kEta}};
+    {kEta}, "1", "diffuse Fresnel reflectance of a dielectric"};
 inline constexpr DatasetSchema kAvgConductorAbove{
     "fresnel_avg_conductor_n_above_1", false,
-    "F_avg(n, k) for n > 1: cosine-weighted hemispherical average of the conductor Fresnel reflectance", 2, {kN, kK}};
+    "F_avg(n, k) for n > 1: cosine-weighted hemispherical average of the conductor Fresnel reflectance", 2, {kN, kK}, "1",
+    "hemispherical average of the conductor Fresnel reflectance, n > 1"};
 inline constexpr DatasetSchema kAvgConductorBelow{
     "fresnel_avg_conductor_n_below_1", false,
     "F_avg(n, k) for n < 1 on inv_n = 1/n: cosine-weighted hemispherical average of the conductor Fresnel reflectance",
-    2, {kInvN, kK}};
+    2, {kInvN, kK}, "1", "hemispherical average of the conductor Fresnel reflectance, n < 1"};
 // Distance g of the tables' first nodes from n = 1 (n = 1 + g above, 1/n = 1 + g below).
 inline constexpr double kAvgGap = 1e-7;
 inline constexpr std::array kDatasets{kDr, kAvgConductorAbove, kAvgConductorBelow};

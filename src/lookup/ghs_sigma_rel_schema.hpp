@@ -50,16 +50,17 @@ inline constexpr std::string_view kMaterialInputs = "s";
 inline constexpr std::string_view kMaterialDerivedAxes =
     "w = log1p((w_scale * B) * (1 - s)) * (1.0 / log1p(w_scale * B))";
 
-inline constexpr std::string_view kWUnits = "log1p(K(1-s))/log1p(K), K = w_scale B";
-inline constexpr AxisSchema kB{"B", lookup::Transform::log, "b/lambda"};
-inline constexpr AxisSchema kW{"w", lookup::Transform::identity, kWUnits};
-inline constexpr AxisSchema kC{"c", lookup::Transform::log, "1"};
+inline constexpr std::string_view kWFormula = "log1p(K(1-s))/log1p(K), K = w_scale B";
+inline constexpr AxisSchema kB{"B", lookup::Transform::log, "1", "correlation distance over wavelength", "b/lambda"};
+inline constexpr AxisSchema kW{"w", lookup::Transform::identity, "1", "graded coordinate of s = sin(theta_i)", kWFormula};
+inline constexpr AxisSchema kC{"c", lookup::Transform::log, "1", "K-correlation exponent c"};
 inline constexpr DatasetSchema kGrid{
     "ghs_sigma_rel2_grid", false,
     "R(B, w, c) = sigma_rel^2(B, c, s) / F(1), F(1) = 1 - (1 + B^2)^(-(c-1)/2); "
     "sigma_rel^2 = integral of S over the disk |f - s e| <= 1 (Eq. 25), S of Eq. 22 with sigma_s = 1",
-    3, {kB, kW, kC}};
-inline constexpr DatasetSchema kMaterial{"ghs_sigma_rel2_material_", true, "sigma_rel^2(s) of material '", 1, {kW}};
+    3, {kB, kW, kC}, "1", "GHS renormalization sigma_rel^2 over its normal-incidence value F(1)"};
+inline constexpr DatasetSchema kMaterial{"ghs_sigma_rel2_material_", true, "sigma_rel^2(s) of material '", 1, {kW}, "1",
+                                         "GHS renormalization sigma_rel^2 of one material"};
 inline constexpr std::array kDatasets{kGrid, kMaterial};
 
 // Dataset attributes of this family (see schema::AttributeRule): K = w_scale * B must be

@@ -16,19 +16,19 @@
 namespace brdftab::schema::hazy_gloss {
 
 inline constexpr std::string_view kFile = "hazy_gloss.h5";
-inline constexpr AxisSchema kMu{"mu", lookup::Transform::x_over_k_plus_x, "1"};
+inline constexpr AxisSchema kMu{"mu", lookup::Transform::x_over_k_plus_x, "1", "cosine of the polar angle of incidence"};
 inline constexpr DatasetSchema kGgxPatch{"hazy_gloss_albedo_ggx_patch_", true,
                                          "A(mu): directional albedo of the hazy-gloss BRDF (GGX, large-patch masking) of material '",
-                                         1, {kMu}};
+                                         1, {kMu}, "1", "directional albedo of the hazy-gloss BRDF"};
 inline constexpr DatasetSchema kGgxCompound{"hazy_gloss_albedo_ggx_compound_", true,
                                             "A(mu): directional albedo of the hazy-gloss BRDF (GGX, compound masking) of material '",
-                                            1, {kMu}};
+                                            1, {kMu}, "1", "directional albedo of the hazy-gloss BRDF"};
 inline constexpr DatasetSchema kBeckmannPatch{
     "hazy_gloss_albedo_beckmann_patch_", true,
-    "A(mu): directional albedo of the hazy-gloss BRDF (Beckmann, large-patch masking) of material '", 1, {kMu}};
+    "A(mu): directional albedo of the hazy-gloss BRDF (Beckmann, large-patch masking) of material '", 1, {kMu}, "1", "directional albedo of the hazy-gloss BRDF"};
 inline constexpr DatasetSchema kBeckmannCompound{
     "hazy_gloss_albedo_beckmann_compound_", true,
-    "A(mu): directional albedo of the hazy-gloss BRDF (Beckmann, compound masking) of material '", 1, {kMu}};
+    "A(mu): directional albedo of the hazy-gloss BRDF (Beckmann, compound masking) of material '", 1, {kMu}, "1", "directional albedo of the hazy-gloss BRDF"};
 inline constexpr std::array kDatasets{kGgxPatch, kGgxCompound, kBeckmannPatch, kBeckmannCompound};
 
 // The dataset of (ndf, compound): ndf 0 = GGX, 1 = Beckmann.

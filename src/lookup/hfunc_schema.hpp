@@ -23,8 +23,8 @@ inline constexpr std::string_view kind_name(Kind k) {
   return names[static_cast<int>(k)];
 }
 
-inline constexpr AxisSchema kC{"c", lookup::Transform::sqrt_one_minus, "1"};
-inline constexpr AxisSchema kMu{"mu", lookup::Transform::fourth_root, "1"};
+inline constexpr AxisSchema kC{"c", lookup::Transform::sqrt_one_minus, "1", "single-scattering albedo"};
+inline constexpr AxisSchema kMu{"mu", lookup::Transform::fourth_root, "1", "cosine of the polar angle"};
 
 inline constexpr std::array<std::string_view, 4> kQuantities{
     "H_iso(c, mu): isotropic scattering, Psi = c/2",
@@ -37,7 +37,7 @@ inline constexpr std::array<std::string_view, 8> kNames{
 
 inline constexpr DatasetSchema dataset(Kind k, bool compact) {
   const int i = static_cast<int>(k);
-  return {kNames[i + (compact ? 4 : 0)], false, kQuantities[i], 2, {kC, kMu}};
+  return {kNames[i + (compact ? 4 : 0)], false, kQuantities[i], 2, {kC, kMu}, "1", "Chandrasekhar H-function"};
 }
 // One material's H(mu) at its fixed c (scenes, docs/scenes.md): hfunc_<kind>_material_<name>,
 // 1-D on mu^(1/4), attribute `ls_c`.
@@ -45,7 +45,7 @@ inline constexpr std::array<std::string_view, 4> kMaterialPrefixes{"hfunc_iso_ma
                                                                    "hfunc_ls1_material_", "hfunc_ls2_material_"};
 inline constexpr DatasetSchema material_dataset(Kind k) {
   const int i = static_cast<int>(k);
-  return {kMaterialPrefixes[i], true, kQuantities[i], 1, {kMu}};
+  return {kMaterialPrefixes[i], true, kQuantities[i], 1, {kMu}, "1", "Chandrasekhar H-function of one material"};
 }
 inline constexpr std::array kDatasets{dataset(Kind::isotropic, false), dataset(Kind::ls0, false), dataset(Kind::ls1, false),
                                       dataset(Kind::ls2, false), dataset(Kind::isotropic, true),  dataset(Kind::ls0, true),

@@ -15,11 +15,11 @@
 namespace brdftab::schema::htsg {
 
 inline constexpr std::string_view kFile = "htsg.h5";
-inline constexpr AxisSchema kG{"g", lookup::Transform::log, "1"};
-inline constexpr AxisSchema kX{"X", lookup::Transform::identity, "1"};
+inline constexpr AxisSchema kG{"g", lookup::Transform::log, "1", "apparent roughness g"};
+inline constexpr AxisSchema kX{"X", lookup::Transform::identity, "1", "scaled in-plane frequency pi tau |L + V|_xy / lambda"};
 inline constexpr DatasetSchema kLogDistribution{
     "htsg_log_distribution", false,
-    "ln Dhat(g, X): log of the HTSG distribution series exp(-g) sum_m g^m / (m! m) exp(-X^2 / m)", 2, {kG, kX}};
+    "ln Dhat(g, X): log of the HTSG distribution series exp(-g) sum_m g^m / (m! m) exp(-X^2 / m)", 2, {kG, kX}, "1", "natural logarithm of the normalized HTSG distribution series"};
 inline constexpr std::array kDatasets{kLogDistribution};
 
 // Dataset attributes of this family beyond the shared ones (see schema::AttributeRule): none.

@@ -79,14 +79,14 @@ namespace brdftab::schema::microfacet_albedo {
 
 inline constexpr std::string_view kFile = "microfacet_albedo.h5";
 
-inline constexpr AxisSchema kMu{"mu", lookup::Transform::fourth_root, "1"};
-inline constexpr AxisSchema kS{"s", lookup::Transform::identity,
+inline constexpr AxisSchema kMu{"mu", lookup::Transform::fourth_root, "1", "cosine of the polar angle of incidence"};
+inline constexpr AxisSchema kS{"s", lookup::Transform::identity, "1", "sheared coordinate of mu = cos(theta_i)",
                                "w r(mu) + (1 - w) l(mu; alpha) (derived_axes; lookup/microfacet_albedo_schema.hpp)"};
-inline constexpr AxisSchema kV{"v", lookup::Transform::identity,
+inline constexpr AxisSchema kV{"v", lookup::Transform::identity, "1", "blended coordinate of mu = cos(theta_i)",
                                "w r(mu) + (1 - w) t(mu) (derived_axes; lookup/microfacet_albedo_schema.hpp)"};
-inline constexpr AxisSchema kAlpha{"alpha", lookup::Transform::log, "1"};
-inline constexpr AxisSchema kBeta{"beta", lookup::Transform::log, "1"};
-inline constexpr AxisSchema kP{"p", lookup::Transform::x_over_k_plus_x, "1"};
+inline constexpr AxisSchema kAlpha{"alpha", lookup::Transform::log, "1", "microfacet roughness alpha"};
+inline constexpr AxisSchema kBeta{"beta", lookup::Transform::log, "1", "generalized Beckmann roughness beta"};
+inline constexpr AxisSchema kP{"p", lookup::Transform::x_over_k_plus_x, "1", "generalized Beckmann kurtosis exponent p"};
 
 // The four directional quantities in the order of numerics::MicrofacetAlbedo, and the two averages.
 inline constexpr std::array<std::string_view, 4> kQuantities{"E_corr", "E_sep", "split_scale", "split_bias"};
@@ -95,7 +95,7 @@ inline constexpr std::array<std::string_view, 2> kAvgQuantities{"Eavg_corr", "Ea
 #define BRDFTAB_MFA_2D(NDF, Q, V, TEXT)                                                                     \
   DatasetSchema {                                                                                          \
     "microfacet_albedo_" NDF "_" Q "_" V, false, TEXT " of the " NDF " microfacet BRDF (F = 1), on (alpha, s(mu; alpha))", 2, \
-    { kAlpha, kS }                                                                                         \
+    { kAlpha, kS }, "1", TEXT                                                                              \
   }
 #define BRDFTAB_MFA_NDF(NDF)                                                                               \
   BRDFTAB_MFA_2D(NDF, "E_corr", "compact", "E_corr(mu, alpha): directional albedo, height-correlated G2"), \
@@ -107,15 +107,18 @@ inline constexpr std::array<std::string_view, 2> kAvgQuantities{"Eavg_corr", "Ea
   BRDFTAB_MFA_2D(NDF, "split_scale", "precise", "split_scale(mu, alpha): Integral f (1 - (1 - cos theta_d)^5) cos"), \
   BRDFTAB_MFA_2D(NDF, "split_bias", "precise", "split_bias(mu, alpha): Integral f (1 - cos theta_d)^5 cos"), \
   DatasetSchema{"microfacet_albedo_avg_" NDF "_Eavg_corr", false,                                          \
-                "Eavg_corr(alpha) = 2 Integral E_corr(mu) mu dmu of the " NDF " microfacet BRDF", 1, {kAlpha}}, \
+                "Eavg_corr(alpha) = 2 Integral E_corr(mu) mu dmu of the " NDF " microfacet BRDF", 1, {kAlpha}, \
+                "1", "hemispherical average albedo, height-correlated G2"},                                  \
   DatasetSchema {                                                                                          \
     "microfacet_albedo_avg_" NDF "_Eavg_sep", false,                                                       \
-        "Eavg_sep(alpha) = 2 Integral E_sep(mu) mu dmu of the " NDF " microfacet BRDF", 1, { kAlpha }      \
+        "Eavg_sep(alpha) = 2 Integral E_sep(mu) mu dmu of the " NDF " microfacet BRDF", 1, { kAlpha },     \
+        "1", "hemispherical average albedo, separable G1 G1"                                               \
   }
 #define BRDFTAB_MFA_G3(Q, TEXT)                                                                            \
   DatasetSchema {                                                                                          \
     "microfacet_albedo_gbeckmann_" Q "_compact", false,                                                    \
-        TEXT " of the generalized Beckmann microfacet BRDF (F = 1), on (p, beta, v(mu))", 3, { kP, kBeta, kV } \
+        TEXT " of the generalized Beckmann microfacet BRDF (F = 1), on (p, beta, v(mu))", 3, { kP, kBeta, kV }, \
+        "1", TEXT " of the generalized Beckmann microfacet BRDF"                                            \
   }
 
 // Index: ndf (0 ggx, 1 beckmann) * 10 + variant (0 compact, 1 precise) * 4 + quantity; the
@@ -127,14 +130,14 @@ inline constexpr std::array kGBeckmann3d{
 inline constexpr DatasetSchema kGBeckmannMaterial{
     "microfacet_albedo_gbeckmann_material_", true,
     "directional albedo quantity of the generalized Beckmann microfacet BRDF (F = 1) at fixed p, on (beta, v(mu)): ", 2,
-    {kBeta, kV}};
+    {kBeta, kV}, "1", "directional albedo quantity of the generalized Beckmann microfacet BRDF at fixed p"};
 inline constexpr std::array kGBeckmannAvg{
     DatasetSchema{"microfacet_albedo_avg_gbeckmann_Eavg_corr", false,
                   "Eavg_corr(beta, p) = 2 Integral E_corr(mu) mu dmu of the generalized Beckmann microfacet BRDF", 2,
-                  {kP, kBeta}},
+                  {kP, kBeta}, "1", "hemispherical average albedo, height-correlated G2"},
     DatasetSchema{"microfacet_albedo_avg_gbeckmann_Eavg_sep", false,
                   "Eavg_sep(beta, p) = 2 Integral E_sep(mu) mu dmu of the generalized Beckmann microfacet BRDF", 2,
-                  {kP, kBeta}}};
+                  {kP, kBeta}, "1", "hemispherical average albedo, separable G1 G1"}};
 #undef BRDFTAB_MFA_2D
 #undef BRDFTAB_MFA_NDF
 #undef BRDFTAB_MFA_G3
@@ -143,7 +146,8 @@ inline constexpr std::array kGBeckmannAvg{
 // lobe at its roughness, on mu: microfacet_albedo_material_<name>_<q>.
 inline constexpr DatasetSchema kSceneMaterial{
     "microfacet_albedo_material_", true,
-    "directional albedo quantity of one scene material's microfacet BRDF (F = 1) at its roughness, on mu: ", 1, {kMu}};
+    "directional albedo quantity of one scene material's microfacet BRDF (F = 1) at its roughness, on mu: ", 1, {kMu}, "1",
+    "directional albedo quantity of one scene material's microfacet BRDF"};
 inline std::string scene_material_dataset(const std::string& material, int quantity) {
   return std::string(kSceneMaterial.name) + material + "_" + std::string(kQuantities[static_cast<std::size_t>(quantity)]);
 }

@@ -7,6 +7,11 @@
 // brdftab::schema::<family>: the file name, the datasets (name, quantity, axes with their
 // transforms and units) and the derived-axis maps (functions that turn physical parameters
 // into axis coordinates, e.g. b = a M1(p)). Standard library only.
+//
+// CF conventions (CF-1.8, the file attribute `Conventions`): every dataset and every axis
+// declares its `units` (UDUNITS spelling: "1" for a dimensionless number, "rad", "sr-1")
+// and a `long_name`; an axis in a derived coordinate states its map in `formula`. The
+// writer copies them from here (gen::write_built_tables), the only place they are spelled.
 #include <array>
 #include <ranges>
 #include <string>
@@ -23,7 +28,9 @@ namespace brdftab::schema {
 struct AxisSchema {
   std::string_view name;
   lookup::Transform transform = lookup::Transform::identity;
-  std::string_view units;
+  std::string_view units;      // UDUNITS, e.g. "1", "rad"
+  std::string_view long_name;  // CF long_name
+  std::string_view formula = {};  // a derived coordinate's map (attribute `formula`), else empty
 };
 
 struct DatasetSchema {
@@ -35,6 +42,8 @@ struct DatasetSchema {
   std::string_view quantity;
   int rank = 0;
   std::array<AxisSchema, 4> axes{};
+  std::string_view units = {};      // UDUNITS units of the values, e.g. "1", "sr-1"
+  std::string_view long_name = {};  // CF long_name of the values
 
   bool matches(std::string_view dataset) const {
     return per_material ? dataset.size() > name.size() && dataset.substr(0, name.size()) == name : dataset == name;

@@ -31,12 +31,14 @@ inline constexpr std::string_view kDerivedAxes = "b = a * (gamma(1.5 / p) / (pi 
 
 inline constexpr std::string_view kQuantity =
     "G1(p, b) = 1 / (1 + Lambda(a = b / M1(p), p)), M1(p) = Gamma(3/(2p)) / (pi Gamma(1/p))";
-inline constexpr AxisSchema kP{"p", lookup::Transform::log, "1"};
-inline constexpr AxisSchema kB{"b", lookup::Transform::x_over_k_plus_x, "1"};
-inline constexpr DatasetSchema kG1Compact{"smith_gbeckmann_g1_compact", false, kQuantity, 2, {kP, kB}};
-inline constexpr DatasetSchema kG1Precise{"smith_gbeckmann_g1_precise", false, kQuantity, 2, {kP, kB}};
+inline constexpr AxisSchema kP{"p", lookup::Transform::log, "1", "generalized Beckmann kurtosis exponent p"};
+inline constexpr AxisSchema kB{"b", lookup::Transform::x_over_k_plus_x, "1", "scaled slope b = a M1(p)", kDerivedAxes};
+inline constexpr DatasetSchema kG1Compact{"smith_gbeckmann_g1_compact", false, kQuantity, 2, {kP, kB}, "1", "Smith masking G1 of the generalized Beckmann distribution"};
+inline constexpr DatasetSchema kG1Precise{"smith_gbeckmann_g1_precise", false, kQuantity, 2, {kP, kB}, "1",
+                                             "Smith masking G1 of the generalized Beckmann distribution"};
 // One material's G1 at its fixed p (scenes, docs/scenes.md): 1-D on b, attribute `p`.
-inline constexpr DatasetSchema kG1Material{"smith_gbeckmann_g1_material_", true, "G1(b) of material '", 1, {kB}};
+inline constexpr DatasetSchema kG1Material{"smith_gbeckmann_g1_material_", true, "G1(b) of material '", 1, {kB}, "1",
+                                              "Smith masking G1 of the generalized Beckmann distribution of one material"};
 inline constexpr std::array kDatasets{kG1Compact, kG1Precise, kG1Material};
 
 // Dataset attributes of this family (see schema::AttributeRule): the definition of b; the

@@ -106,6 +106,8 @@ std::vector<unsigned char> trusted_bytes(const std::filesystem::path& file, cons
   switch (verify_digest(bytes, &why)) {
     case DigestStatus::valid: return bytes;
     case DigestStatus::mismatch:
+      fail(file, "", "rejected before parsing: " + why + "; if you edited the file on purpose, re-seal it with `brdftab seal " +
+                         file.string() + "`");
     case DigestStatus::malformed: fail(file, "", "rejected before parsing: " + why);
     case DigestStatus::absent: break;
   }
@@ -164,6 +166,9 @@ constexpr double kMaxFinite = std::numeric_limits<double>::max();
 constexpr AttributeRule kSharedDatasetRules[] = {
     {"schema_version", Kind::integer, 0, 0, false},  // checked separately (clear message)
     {"quantity", Kind::text, 0, 0, false},
+    // CF-1.8 (lookup/schema.hpp)
+    {"units", Kind::text, 0, 0, false},
+    {"long_name", Kind::text, 0, 0, false},
     {"interpolation", Kind::text, 0, 0, false},
     {"storage", Kind::text, 0, 0, false},
     {"domain", Kind::text, 0, 0, false},
@@ -198,11 +203,14 @@ constexpr AttributeRule kFileRules[] = {
     {"created_utc", Kind::text, 0, 0, false},
     // what produced the file (generators/content_key.hpp): incremental generate, check
     {"content_key", Kind::text, 0, 0, false},
+    {"Conventions", Kind::text, 0, 0, false},
 };
 constexpr AttributeRule kAxisRules[] = {
     {"name", Kind::text, 0, 0, false},
     {"transform", Kind::text, 0, 0, false},
     {"units", Kind::text, 0, 0, false},
+    {"long_name", Kind::text, 0, 0, false},
+    {"formula", Kind::text, 0, 0, false},
     // k of x/(k+x); 1 for the others. Positive and finite, within what the transform handles.
     {"scale", Kind::number, 0, 1e300, true},
     // Schema version 2 (checked against `transform` and the axis values).

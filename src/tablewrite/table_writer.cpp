@@ -127,6 +127,11 @@ void write_dataset(hid_t file, const DatasetToWrite& ds, const std::string& crea
     hdf5::write_attribute(ad, "transform_formula", std::string(lookup::transform_formula(a.transform)));
     hdf5::write_attribute(ad, "inverse_formula", std::string(lookup::inverse_transform_formula(a.transform)));
     hdf5::write_attribute(ad, "units", a.units);
+    if (static_cast<std::size_t>(d) < ds.axis_text.size()) {
+      const AxisText& text = ds.axis_text[static_cast<std::size_t>(d)];
+      if (!text.long_name.empty()) hdf5::write_attribute(ad, "long_name", text.long_name);
+      if (!text.formula.empty()) hdf5::write_attribute(ad, "formula", text.formula);
+    }
     hdf5::write_attribute(ad, "scale", a.scale);
     hdf5::write_attribute(ad, "u_first", a.u0);
     hdf5::write_attribute(ad, "u_step", a.du);
@@ -142,6 +147,8 @@ void write_dataset(hid_t file, const DatasetToWrite& ds, const std::string& crea
   attrs["interpolation_first_node"] = std::string(scheme.first_node);
   attrs["interpolation_weights"] = std::string(scheme.weights);
   attrs["storage"] = std::string(lookup::storage_name(t.storage()));
+  if (!ds.units.empty()) attrs["units"] = ds.units;
+  if (!ds.long_name.empty()) attrs["long_name"] = ds.long_name;
   // Provenance that changes with every build or run (the source commit, the time) only in
   // stamped runs: byte-identical files otherwise (docs/scenes.md, "reproducible").
   if (!created.empty()) {
@@ -171,6 +178,7 @@ std::vector<unsigned char> build_hdf5_image(const std::vector<DatasetToWrite>& d
   const std::string created = creation_timestamp();
   std::map<std::string, AttributeValue> fattrs = file_attributes;
   fattrs["schema_version"] = lookup::kSchemaVersion;
+  fattrs["Conventions"] = std::string("CF-1.8");
   if (!created.empty()) fattrs.try_emplace("created_utc", created);
   for (const auto& [k, v] : fattrs) hdf5::write_attribute(file, k, v);
   for (const auto& ds : datasets) write_dataset(file, ds, created);

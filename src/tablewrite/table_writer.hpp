@@ -31,10 +31,21 @@ using AttributeValue = lookup::Attribute;
 // its spelled-out scheme, storage, and, only when SOURCE_DATE_EPOCH or BRDFTAB_TIMESTAMP=now is set,
 // source_commit and created_utc) itself; the generator supplies domain, max_abs_error, max_rel_error,
 // generator, generator_version, method, and anything else it measured.
+// CF-style names (CF-1.8; the file attribute `Conventions` is always written): `units` and
+// `long_name` of the values and, per axis, `long_name` and `formula` (a derived coordinate's
+// map) are written when non-empty. Generators take them from the family schema
+// (gen::write_built_tables); the axes' units are the table's (lookup::Axis::units).
+struct AxisText {
+  std::string long_name;
+  std::string formula;
+};
 struct DatasetToWrite {
   lookup::Table table;
   std::string quantity;  // what the values are, e.g. "H_iso(c, mu)"
   std::map<std::string, AttributeValue> attributes;
+  std::string units = {};                // UDUNITS, e.g. "1", "sr-1"
+  std::string long_name = {};
+  std::vector<AxisText> axis_text = {};  // one per axis, or empty
 };
 
 // Writes all datasets into `path` atomically (temporary file + rename).
