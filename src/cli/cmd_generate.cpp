@@ -58,7 +58,8 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
   // The files to build (up-to-date ones are skipped), then each with progress n/N.
   std::vector<const decltype(src->jobs)::value_type*> todo;
   for (const auto& job : src->jobs) {
-    if (!o.rebuild && gen::table_file_status(o.out_dir / job.file, job.key).state == gen::FileState::up_to_date)
+    if (!o.rebuild && gen::table_file_status(o.out_dir / job.file, job.key, job.code_fingerprint).state ==
+                          gen::FileState::up_to_date)
       skipped.push_back(job.file);
     else
       todo.push_back(&job);
@@ -69,6 +70,7 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
     progress.start_file(++file_index, todo.size(), job.family);
     try {
       ctx.content_key = job.key;
+      ctx.code_fingerprint = job.code_fingerprint;
       auto s = gen::find_family(job.family)->generate(job.entry, ctx);
       summaries.insert(summaries.end(), s.begin(), s.end());
     } catch (const gen::ManifestError& ex) {

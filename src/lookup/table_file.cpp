@@ -232,6 +232,8 @@ constexpr AttributeRule kFileRules[] = {
     {"created_utc", Kind::text, 0, 0, false},
     // what produced the file (generators/content_key.hpp): incremental generate, check
     {"content_key", Kind::text, 0, 0, false},
+    // the fingerprint of the code that produced it (generators/code_fingerprint.hpp)
+    {"code_fingerprint", Kind::text, 0, 0, false},
 };
 constexpr AttributeRule kAxisRules[] = {
     {"name", Kind::text, 0, 0, false},
