@@ -45,9 +45,9 @@ using namespace brdftab;
 namespace {
 
 // One HDF5 object of a table file as plain text: its attributes (name -> type and exact
-// value) and, for a dataset, its type, shape and the SHA-256 of its raw bytes. Object
-// references (DIMENSION_LIST, REFERENCE_LIST: file addresses) are recorded as present only;
-// the reader checks where they point when it loads a table.
+// value) and, for a dataset, its type, shape and the SHA-256 of its raw bytes. The dimension
+// scales' object references (DIMENSION_LIST, REFERENCE_LIST: file addresses) are recorded as
+// present only; the reader checks where they point when it loads a table.
 struct H5Object {
   std::map<std::string, std::string> attributes;
   std::string values;  // "" for a group
@@ -77,7 +77,8 @@ std::string attribute_text(hid_t obj, const char* name) {
     out = "string(cset " + std::to_string(H5Tget_cset(type)) + ") " + (p ? p : "<null>");
     H5free_memory(p);
     H5Tclose(mem);
-  } else if (cls == H5T_REFERENCE || cls == H5T_VLEN) {
+  } else if (cls == H5T_REFERENCE || cls == H5T_VLEN || std::strcmp(name, "REFERENCE_LIST") == 0 ||
+             std::strcmp(name, "DIMENSION_LIST") == 0) {
     out = "reference";
   } else {
     std::vector<unsigned char> buf(H5Tget_size(type) * static_cast<std::size_t>(std::max<hssize_t>(n, 1)));
