@@ -26,6 +26,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "generators/code_fingerprint.hpp"
 #include "generators/generate_context.hpp"
 #include "generators/scene.hpp"
 #include "generators/table_builder.hpp"
@@ -51,9 +52,12 @@ class Family {
   virtual void check_entry(const nlohmann::json& entry) const = 0;
   // Builds the tables in memory (filled, error measured) without writing.
   virtual std::vector<BuiltTable> build(const nlohmann::json& entry, const GenerateContext& ctx) const = 0;
-  // Builds and writes ctx.out_dir / file() atomically.
+  // Builds and writes ctx.out_dir / file() atomically, with the family's code fingerprint
+  // (ctx.code_fingerprint if set, else code_fingerprint(name())).
   std::vector<TableSummary> generate(const nlohmann::json& entry, const GenerateContext& ctx) const {
-    return write_built_tables(file(), datasets(), build(entry, ctx), ctx);
+    GenerateContext c = ctx;
+    if (c.code_fingerprint.empty()) c.code_fingerprint = code_fingerprint(name());
+    return write_built_tables(file(), datasets(), build(entry, c), c);
   }
   // A cheap entry for tests, and the same with narrower ranges (must give smaller tables).
   virtual nlohmann::json test_entry() const = 0;

@@ -24,14 +24,18 @@ struct GenerateContext {
   // another value re-measures the error on a fresh point set (conformance test).
   unsigned error_seed = 0;
   // Dry run (plan, cost model): build_table checks each spec and returns its shape and
-  // bytes with zero values and an estimated time (timed sample of the row function), no
-  // fill and no error measurement.
+  // bytes with zero values, an estimated time (timed sample of the row function) and the
+  // attributes that follow from the spec (all but the measured errors), no fill and no error
+  // measurement.
   bool dry_run = false;
   // Written as the file-level attribute content_key (generators/content_key.hpp).
   std::string content_key;
   // Who computes the rows (generators/row_runner.hpp): null, this process's OpenMP threads;
   // else a checkpointing runner or the MPI one. Same values either way.
   RowRunner* rows = nullptr;
+  // Written as the file-level attribute code_fingerprint (generators/code_fingerprint.hpp);
+  // Family::generate fills it in when empty.
+  std::string code_fingerprint;
   void report(const std::string& stage, double fraction) const {
     if (progress) progress->update(stage, fraction);
   }

@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "generators/code_fingerprint.hpp"
 #include "generators/content_key.hpp"
 #include "lookup/number_format.hpp"
 #include "tablewrite/temp_file.hpp"
@@ -17,8 +18,8 @@ std::vector<FileJob> jobs_from_manifest(const std::vector<ManifestEntry>& entrie
   std::vector<FileJob> jobs;
   for (const auto& e : entries) {
     const Family* f = find_family(e.family);
-    FileJob j{e.family, f->file(), f->normalized(e.entry), ""};
-    j.key = content_key("family " + e.family, j.entry);
+    FileJob j{e.family, f->file(), f->normalized(e.entry), "", code_fingerprint(e.family)};
+    j.key = family_content_key(e.family, j.entry);
     jobs.push_back(std::move(j));
   }
   return jobs;
@@ -40,8 +41,8 @@ ScenePlan plan_scene(const Scene& scene) {
     if (!e) continue;
     plan.decisions.push_back({f->name(), e->choice, e->uses.size()});
     if (e->entry) {
-      FileJob j{f->name(), f->file(), f->normalized(*e->entry), ""};
-      j.key = content_key("family " + f->name(), j.entry);
+      FileJob j{f->name(), f->file(), f->normalized(*e->entry), "", code_fingerprint(f->name())};
+      j.key = family_content_key(f->name(), j.entry);
       plan.jobs.push_back(std::move(j));
     }
     for (auto& u : e->uses) {

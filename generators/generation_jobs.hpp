@@ -19,6 +19,7 @@ struct FileJob {
   std::string family, file;
   nlohmann::json entry;  // normalized family entry
   std::string key;       // content key
+  std::string code_fingerprint;  // of the family's code (generators/code_fingerprint.hpp)
 };
 
 std::vector<FileJob> jobs_from_manifest(const std::vector<ManifestEntry>& entries);

@@ -158,6 +158,28 @@ std::pair<double, double> row_cost(const TableSpec& spec, const std::vector<std:
   return cost;
 }
 
+// The attributes that follow from the spec alone (all but the measured max_*_error*): a dry
+// run has them too, so a file's attributes can be checked without filling its tables
+// (tests/test_committed_tables.cpp).
+// n_edge: the number of shared edge points (edge_rows; a count that depends on the axes only).
+void set_spec_attributes(const TableSpec& spec, std::size_t n_edge, std::map<std::string, tablewrite::AttributeValue>& a) {
+  const std::size_t rows = static_cast<std::size_t>(std::max(1, spec.error_rows));
+  const std::size_t per_row = static_cast<std::size_t>(std::max(1, spec.error_per_row));
+  const std::size_t n_targeted = spec.targeted_points.size();
+  a["domain"] = spec.domain;
+  a["method"] = spec.method;
+  a["generator"] = spec.generator;
+  a["generator_version"] = spec.generator_version;
+  a["error_samples"] = static_cast<long long>(rows * per_row + n_targeted + n_edge);
+  std::ostringstream how;
+  how << rows << " x " << per_row << " points uniform in the transformed axis coordinates (seed " << spec.seed
+      << "), exact values from the generator's numerics";
+  if (n_targeted > 0) how << "; plus " << n_targeted << " targeted points (" << spec.targeted_text << ")";
+  how << "; plus " << n_edge << " " << kEdgeSamplingText;
+  if (spec.rel_floor > 0) how << "; relative error only where |exact| > " << format_number(spec.rel_floor);
+  a["error_sampling"] = how.str();
+}
+
 BuiltTable dry_run_table(const TableSpec& spec, const RowFunction& row) {
   std::vector<lookup::Axis> axes;
   std::vector<std::vector<double>> grid;
@@ -172,7 +194,9 @@ BuiltTable dry_run_table(const TableSpec& spec, const RowFunction& row) {
                                 ? std::pair<double, double>{spec.cost_row_seconds, spec.cost_value_seconds}
                                 : row_cost(spec, grid, row);
   double err_rows = std::max(1, spec.error_rows), err_values = err_rows * std::max(1, spec.error_per_row);
-  for (const auto& e : edge_rows(axes, spec.seed)) err_rows += 1, err_values += static_cast<double>(e.last.size());
+  std::size_t n_edge = 0;
+  for (const auto& e : edge_rows(axes, spec.seed)) err_rows += 1, n_edge += e.last.size();
+  err_values += static_cast<double>(n_edge);
   double seconds = (static_cast<double>(rows) + err_rows) * setup + (static_cast<double>(values) + err_values) * per;
   // Declared costs are single-core: the estimate is CPU seconds, not depending on the
   // machine's thread count (reproducible decisions); timed samples are wall time of a row.
@@ -182,6 +206,7 @@ BuiltTable dry_run_table(const TableSpec& spec, const RowFunction& row) {
   BuiltTable out;
   out.dataset.table = lookup::Table(spec.dataset, axes, zeros, spec.storage, spec.interpolation);
   out.dataset.quantity = spec.quantity;
+  set_spec_attributes(spec, n_edge, out.dataset.attributes);
   TableSummary& s = out.summary;
   s.dataset = spec.dataset;
   for (const auto& ax : axes) s.shape.push_back(static_cast<std::size_t>(ax.n));
@@ -370,22 +395,11 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
   out.dataset.table = std::move(table);
   out.dataset.quantity = spec.quantity;
   auto& a = out.dataset.attributes;
-  a["domain"] = spec.domain;
-  a["method"] = spec.method;
-  a["generator"] = spec.generator;
-  a["generator_version"] = spec.generator_version;
+  set_spec_attributes(spec, n_edge, a);
   a["max_abs_error"] = total.abs;
   a["max_rel_error"] = total.rel;
   a["max_abs_error_at"] = where(total.abs_at);
   a["max_rel_error_at"] = where(total.rel_at);
-  a["error_samples"] = static_cast<long long>(rows * per_row + n_targeted + n_edge);
-  std::ostringstream how;
-  how << rows << " x " << per_row << " points uniform in the transformed axis coordinates (seed " << spec.seed
-      << "), exact values from the generator's numerics";
-  if (n_targeted > 0) how << "; plus " << n_targeted << " targeted points (" << spec.targeted_text << ")";
-  how << "; plus " << n_edge << " " << kEdgeSamplingText;
-  if (spec.rel_floor > 0) how << "; relative error only where |exact| > " << format_number(spec.rel_floor);
-  a["error_sampling"] = how.str();
   // No generation_seconds attribute: a wall-clock measurement would make every run's file
   // differ (reproducible output); the time is in the summary that generate prints.
 
@@ -424,6 +438,7 @@ std::vector<TableSummary> write_built_tables(const std::string& file, std::span<
   }
   std::map<std::string, tablewrite::AttributeValue> file_attributes{{"generator", generator}};
   if (!ctx.content_key.empty()) file_attributes["content_key"] = ctx.content_key;
+  if (!ctx.code_fingerprint.empty()) file_attributes["code_fingerprint"] = ctx.code_fingerprint;
   tablewrite::write_table_file(ctx.out_dir / file, datasets, file_attributes);
   return summaries;
 }

@@ -76,8 +76,8 @@ TEST_CASE("generate --scene: the tables the scene needs, incremental, check, byt
   std::ofstream(d / "changed.json") << changed;
   r = run_cli("check --tables '" + out1 + "' --scene '" + (d / "changed.json").string() + "'");
   CHECK(r.status == 1);
-  CHECK(contains(r.out, "smith_gbeckmann.h5: stale"));
-  CHECK(contains(r.out, "ghs_sigma_rel.h5: up to date"));
+  CHECK(contains(r.out, "smith_gbeckmann.h5 (family smith_gbeckmann): stale, entry or version changed"));
+  CHECK(contains(r.out, "ghs_sigma_rel.h5 (family ghs_sigma_rel): up to date"));
   CHECK(contains(r.out, "scene.index: stale"));
   r = run_cli("plan --scene '" + (d / "changed.json").string() + "' --tables '" + out1 + "'");
   CHECK(r.status == 0);
@@ -91,7 +91,7 @@ TEST_CASE("generate --scene: the tables the scene needs, incremental, check, byt
   fs::remove(fs::path(out1) / "ghs_sigma_rel.h5");
   r = run_cli("check --tables '" + out1 + "' --scene '" + (d / "changed.json").string() + "'");
   CHECK(r.status == 1);
-  CHECK(contains(r.out, "ghs_sigma_rel.h5: missing"));
+  CHECK(contains(r.out, "ghs_sigma_rel.h5 (family ghs_sigma_rel): missing"));
   fs::remove_all(d);
 }
 

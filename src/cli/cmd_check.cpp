@@ -22,8 +22,8 @@ int run_check(const CheckOptions& o, std::ostream& out, std::ostream& err) {
   if (!src) return 2;
   int bad = 0;
   for (const auto& job : src->jobs) {
-    const auto st = gen::table_file_status(o.dir / job.file, job.key);
-    out << job.file << ": " << gen::file_state_name(st.state) << (st.why.empty() ? "" : " (" + st.why + ")") << "\n";
+    const auto st = gen::table_file_status(o.dir / job.file, job.key, job.code_fingerprint);
+    out << job.file << " (family " << job.family << "): " << gen::file_status_text(st) << "\n";
     bad += st.state != gen::FileState::up_to_date;
   }
   if (src->scene) {

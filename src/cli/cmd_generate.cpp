@@ -57,7 +57,8 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
   // The files to build (up-to-date ones are skipped), then each with progress n/N.
   std::vector<const decltype(src->jobs)::value_type*> todo;
   for (const auto& job : src->jobs) {
-    if (!o.rebuild && gen::table_file_status(o.out_dir / job.file, job.key).state == gen::FileState::up_to_date)
+    if (!o.rebuild && gen::table_file_status(o.out_dir / job.file, job.key, job.code_fingerprint).state ==
+                          gen::FileState::up_to_date)
       skipped.push_back(job.file);
     else
       todo.push_back(&job);
@@ -73,6 +74,7 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
       gen::LocalRowRunner runner(&checkpoint);
       ctx.rows = &runner;
       ctx.content_key = job.key;
+      ctx.code_fingerprint = job.code_fingerprint;
       auto s = gen::find_family(job.family)->generate(job.entry, ctx);
       ctx.rows = nullptr;
       checkpoint.remove();

@@ -91,7 +91,7 @@ int run_plan(const PlanOptions& o, std::ostream& out, std::ostream& err) {
     std::string status = "-";
     bool current = false;
     if (!o.out_dir.empty()) {
-      const auto st = gen::table_file_status(o.out_dir / job.file, job.key);
+      const auto st = gen::table_file_status(o.out_dir / job.file, job.key, job.code_fingerprint);
       status = gen::file_state_name(st.state);
       current = st.state == gen::FileState::up_to_date;
       up_to_date += current;

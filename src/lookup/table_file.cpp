@@ -204,6 +204,8 @@ constexpr AttributeRule kFileRules[] = {
     // what produced the file (generators/content_key.hpp): incremental generate, check
     {"content_key", Kind::text, 0, 0, false},
     {"Conventions", Kind::text, 0, 0, false},
+    // the fingerprint of the code that produced it (generators/code_fingerprint.hpp)
+    {"code_fingerprint", Kind::text, 0, 0, false},
 };
 constexpr AttributeRule kAxisRules[] = {
     {"name", Kind::text, 0, 0, false},
