@@ -26,7 +26,8 @@ int main() {
   const double G1 = smith_gbeckmann_g1(g1, 0.4, 1.5, m1);                 // a = beta tan(theta), p
   const lk::LsKdTable kd(tables.table("ls.h5", "ls_kd"));
   const double k = ls_kd(kd, 0.9), c = ls_c_from_kd(kd, 0.6);  // k_d(c), c(k_d)
-  const lk::HazyGlossAlbedoTable hz(tables.table("hazy_gloss.h5", "hazy_gloss_albedo_ggx_patch_probe_a"));
+  const lk::HazyGlossAlbedoTable hz(tables.table("hazy_gloss.h5", "hazy_gloss_albedo_ggx_patch_probe_a"),
+                                    brdftab::schema::hazy_gloss::kGgxPatch);  // the schema it must match
   const double a_haze = hazy_gloss_albedo(hz, 0.5);
   const lk::HpAlbedoMaterial nickel(tables, "hp.h5", "nickel_g");
   const lk::HpAlbedoParts a_hp = nickel(0.3);  // reflection, diffraction, layer, total()
