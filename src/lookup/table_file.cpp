@@ -222,6 +222,10 @@ constexpr AttributeRule kDatasetRules[] = {
     {"mu_s_log_scale", Kind::number, 0, 1e12, true},
     // generalized Beckmann grids: the weight of the blended v(mu) (lookup::detail::read_mu_blend)
     {"mu_v_root_weight", Kind::number, 0, 1, false},
+    // render profile (lookup/render.hpp): c of t(mu; alpha), and CF-style units and long name
+    {"mu_t_scale", Kind::number, 0, 1e12, true},
+    {"units", Kind::text, 0, 0, false},
+    {"long_name", Kind::text, 0, 0, false},
     {"mu_lo", Kind::number, 0, 1, true},
     {"mu_hi", Kind::number, 0, 1, true},
     {"ls_kd", Kind::number, 0, 1, false},
