@@ -68,7 +68,7 @@ TEST_CASE("render profile: E_corr and E_sep within 1e-5 of the exact numerics, d
     for (int i = 0; i < 2; ++i) alphas.push_back(std::pow(0.01, U(rng)));
     double worst = 0;
     for (double alpha : alphas) {
-      std::vector<double> mus = {1e-6, 3.7e-6, 2.1e-4, alpha, 2.5 * alpha, 0.071, 0.5, 0.93, 0.97, 0.9993, 1.0};
+      std::vector<double> mus = {1e-6, 3.7e-6, 2.1e-4, alpha, std::min(2.5 * alpha, 0.999), 0.071, 0.5, 0.93, 0.97, 0.9993, 1.0};
       mus.push_back(U(rng));
       const auto exact = numerics::microfacet_albedo_row({kind(ndf), alpha}, mus);
       for (std::size_t j = 0; j < mus.size(); ++j) {
