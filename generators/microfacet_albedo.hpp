@@ -77,7 +77,7 @@ struct Config {
 };
 
 // The render profile's layout (measured choice: lookup/microfacet_albedo_schema.hpp).
-inline constexpr int kRenderAlphaPoints = 80, kRenderTPoints = 128, kRenderAvgPoints = 48;
+inline constexpr int kRenderAlphaPoints = 80, kRenderTPoints = 128, kRenderAvgPoints = 256;
 
 // E (quantity index q of numerics::MicrofacetAlbedo's order, 0 e_corr or 1 e_sep) from the
 // precise table on (alpha, s) at any mu in [0, 1]: the table for mu >= shear.mu_lo (its

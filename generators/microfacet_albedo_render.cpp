@@ -1,6 +1,6 @@
 // The render profile of the microfacet_albedo family (lookup/render.hpp): E_corr and E_sep of
 // GGX and Beckmann on (alpha^(1/4), t(mu; alpha)), 80 x 128 float32 cubic (40 KB each), and
-// E_avg on alpha^(1/4) (48 points). Layout and its measured choice:
+// E_avg on alpha^(1/4) (256 points, 1 KB). Layout and its measured choice:
 // lookup/microfacet_albedo_schema.hpp ("render profile").
 //
 // Values. The nodes are filled from the precise tables (on (alpha, s), float64, cubic, stated

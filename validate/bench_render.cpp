@@ -60,20 +60,21 @@ std::shared_ptr<lookup::TableSet> render_table_set(const std::filesystem::path& 
 }
 
 template <class F>
-void scalar_bench(const std::string& name, std::shared_ptr<const Points> pts, F f, double err, double bytes) {
-  benchmark::RegisterBenchmark(name.c_str(), [pts, f, err, bytes](benchmark::State& state) {
+void scalar_bench(const std::string& name, std::shared_ptr<const Points> pts, F f, double err, double bytes, double rel = -1) {
+  benchmark::RegisterBenchmark(name.c_str(), [pts, f, err, bytes, rel](benchmark::State& state) {
     const std::size_t n = pts->mu.size();
     for (auto _ : state)
       for (std::size_t i = 0; i < n; ++i) benchmark::DoNotOptimize(f(*pts, i));
     per_call(state, n);
     state.counters["max_abs_err_vs_precise"] = err;
     state.counters["table_bytes"] = bytes;
+    if (rel >= 0) state.counters["max_rel_err_vs_precise"] = rel;
   })->Repetitions(5)->ReportAggregatesOnly(true);
 }
 
 template <class F>
-void batch_bench(const std::string& name, std::shared_ptr<const Points> pts, F f, double err, double bytes) {
-  benchmark::RegisterBenchmark(name.c_str(), [pts, f, err, bytes](benchmark::State& state) {
+void batch_bench(const std::string& name, std::shared_ptr<const Points> pts, F f, double err, double bytes, double rel = -1) {
+  benchmark::RegisterBenchmark(name.c_str(), [pts, f, err, bytes, rel](benchmark::State& state) {
     std::vector<double> out(pts->mu.size());
     for (auto _ : state) {
       f(*pts, out);
@@ -83,6 +84,7 @@ void batch_bench(const std::string& name, std::shared_ptr<const Points> pts, F f
     per_call(state, out.size());
     state.counters["max_abs_err_vs_precise"] = err;
     state.counters["table_bytes"] = bytes;
+    if (rel >= 0) state.counters["max_rel_err_vs_precise"] = rel;
   })->Repetitions(5)->ReportAggregatesOnly(true);
 }
 
@@ -178,17 +180,23 @@ void register_render_benchmarks(const BenchContext& ctx) {
         return lookup::render::microfacet_albedo_kulla_conty_lobe(*t, pts->mu[i], pts->mu2[i], pts->alpha[i]) -
                lookup::kulla_conty_lobe(pk, pts->mu[i], pts->mu2[i], pts->alpha[i]);
       });
+      double rel = 0;  // relative: the lobe is ill-conditioned where 1 - E_avg is small (docs/speed.md)
+      for (std::size_t i = 0; i < kN; ++i) {
+        const double r = lookup::kulla_conty_lobe(pk, pts->mu[i], pts->mu2[i], pts->alpha[i]);
+        if (r > 1e-3)
+          rel = std::max(rel, std::abs(lookup::render::microfacet_albedo_kulla_conty_lobe(*t, pts->mu[i], pts->mu2[i], pts->alpha[i]) - r) / r);
+      }
       const double bytes = static_cast<double>(t->e[0].bytes() + t->eavg[0].bytes());
       scalar_bench("render/" + ndf + "_kulla_conty_lobe/scalar", pts,
                    [t](const Points& p, std::size_t i) {
                      return lookup::render::microfacet_albedo_kulla_conty_lobe(*t, p.mu[i], p.mu2[i], p.alpha[i]);
                    },
-                   err, bytes);
+                   err, bytes, rel);
       batch_bench("render/" + ndf + "_kulla_conty_lobe/batch", pts,
                   [t](const Points& p, std::vector<double>& out) {
                     lookup::render::microfacet_albedo_kulla_conty_lobe_batch(*t, p.mu, p.mu2, p.alpha, out);
                   },
-                  err, bytes);
+                  err, bytes, rel);
     }
     // The precise profile at the same points, for the ratio (E_corr, one quantity per call).
     auto pk = precise[k];
