@@ -21,6 +21,8 @@
 #include <functional>
 #include <memory>
 #include <set>
+#include <stdexcept>
+#include <string_view>
 #include <mutex>
 #include <span>
 #include <tuple>
@@ -127,6 +129,7 @@ Config read_config(const nlohmann::json& entry) {
   c.g_avg_error_per_row = static_cast<int>(r.integer("g_avg_error_per_row", c.g_avg_error_per_row, 1, 100000));
   if (const nlohmann::json* list = r.raw("materials")) c.materials = read_materials(*list, r.key_path("materials"));
   c.material_mu_points = static_cast<int>(r.integer("material_mu_points", c.material_mu_points, 4, 100000));
+  c.render = r.boolean("render", c.render);
   r.finish();
   if (!((c.ggx || c.beckmann) && (c.compact || c.precise)) && !c.gbeckmann && c.materials.empty())
     throw ManifestError("tables.microfacet_albedo: no NDF and variant selected: nothing to generate");
@@ -164,7 +167,8 @@ nlohmann::json to_json_grids(const Config& c) {
           {"g_error_rows", c.g_error_rows},
           {"g_error_per_row", c.g_error_per_row},
           {"g_avg_error_rows", c.g_avg_error_rows},
-          {"g_avg_error_per_row", c.g_avg_error_per_row}};
+          {"g_avg_error_per_row", c.g_avg_error_per_row},
+          {"render", c.render}};
 }
 }  // namespace
 
@@ -435,6 +439,23 @@ void build_ndf(const Config& c, int ndf, const GenerateContext& ctx, std::vector
       return q == 0 ? a.eavg_corr : a.eavg_sep;
     });
     tables.push_back(finish(std::move(spec), row, ctx, kValueSeconds * kAvgPerValue));
+  }
+  // The render profile, from the precise tables just built (microfacet_albedo_render.cpp).
+  if (c.render && c.precise && c.mu_lo == numerics::kAlbedoMuMin && c.mu_hi == 1.0) {
+    const auto find = [&](std::string_view name) -> const BuiltTable& {
+      for (const BuiltTable& b : tables)
+        if (b.dataset.table.name() == name) return b;
+      throw std::logic_error("microfacet_albedo: no dataset " + std::string(name) + " built");
+    };
+    const BuiltTable& ec = find(sc::ndf_dataset(ndf, true, 0).name);
+    const BuiltTable& es = find(sc::ndf_dataset(ndf, true, 1).name);
+    const BuiltTable& ac = find(sc::ndf_avg_dataset(ndf, 0).name);
+    const BuiltTable& as = find(sc::ndf_avg_dataset(ndf, 1).name);
+    const double err[4] = {ec.summary.max_abs_error, es.summary.max_abs_error, ac.summary.max_abs_error,
+                           as.summary.max_abs_error};
+    std::vector<BuiltTable> r = build_render(ndf, ec.dataset.table, es.dataset.table, ac.dataset.table, as.dataset.table,
+                                             shear, err, ctx);
+    for (BuiltTable& b : r) tables.push_back(std::move(b));
   }
 }
 

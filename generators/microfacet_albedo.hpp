@@ -2,6 +2,7 @@
 // Table family microfacet_albedo: directional albedo E(mu) (F = 1), the split-sum pair and
 // the hemispherical average E_avg of GGX, Beckmann and generalized Beckmann microfacet BRDFs
 // (see microfacet_albedo.cpp; schema in lookup/microfacet_albedo_schema.hpp).
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "generators/family.hpp"
+#include "generators/table_builder.hpp"
+#include "lookup/table.hpp"
 #include "lookup/microfacet_albedo_schema.hpp"
 
 namespace brdftab::gen::microfacet_albedo {
@@ -66,7 +69,35 @@ struct Config {
   // microfacet_albedo_scene.cpp), material_mu_points points on mu^(1/4), float64 cubic.
   std::vector<Material> materials;
   int material_mu_points = 321;
+  // The render profile (lookup/render.hpp; datasets *_render): E_corr, E_sep on
+  // (alpha^(1/4), t(mu; alpha)) and E_avg on alpha^(1/4), float32 cubic, for GGX and Beckmann,
+  // filled in seconds from the precise tables of the same run (so only with `precise`, over
+  // the precise tables' alpha range, mu_range [1e-6, 1]; microfacet_albedo_render.cpp).
+  bool render = true;
 };
+
+// The render profile's layout (measured choice: lookup/microfacet_albedo_schema.hpp).
+inline constexpr int kRenderAlphaPoints = 80, kRenderTPoints = 128, kRenderAvgPoints = 256;
+
+// E (quantity index q of numerics::MicrofacetAlbedo's order, 0 e_corr or 1 e_sep) from the
+// precise table on (alpha, s) at any mu in [0, 1]: the table for mu >= shear.mu_lo (its
+// stated error ~1e-8), below it the line through the table at mu_lo and 2 mu_lo (E is linear
+// in mu near 0 up to mu log mu terms: measured difference < 1e-7 at alpha >= 0.01).
+double e_from_precise(const lookup::Table& precise, const schema::microfacet_albedo::MuShear& shear, double mu,
+                      double alpha);
+
+// The render datasets of one NDF (0 ggx, 1 beckmann) from its precise E_corr, E_sep tables
+// and E_avg tables (any source: this run's, or a file's); their stated errors are added to
+// the measured interpolation error. alpha range: the precise tables'.
+std::vector<BuiltTable> build_render(int ndf, const lookup::Table& e_corr, const lookup::Table& e_sep,
+                                     const lookup::Table& eavg_corr, const lookup::Table& eavg_sep,
+                                     const schema::microfacet_albedo::MuShear& shear, const double source_error[4],
+                                     const GenerateContext& ctx);
+// The same from the precise and E_avg tables of <tables_dir>/microfacet_albedo.h5 (both NDFs;
+// checked against the schema; throws naming a missing or mismatched table). Sub-second: the
+// bench and the tests use it on the committed tables; write them with
+// write_built_tables(schema::microfacet_albedo::kFile, ...).
+std::vector<BuiltTable> build_render_from_file(const std::filesystem::path& tables_dir, const GenerateContext& ctx);
 
 Config read_config(const nlohmann::json& entry);
 nlohmann::json to_json(const Config& c);

@@ -18,7 +18,10 @@
 
 namespace brdftab::validate::microfacet_albedo {
 
+void register_render_benchmarks(const BenchContext& ctx);  // validate/bench_render.cpp
+
 void register_benchmarks(const BenchContext& ctx) {
+  register_render_benchmarks(ctx);
   // (mu, alpha): mu log-uniform in [1e-3, 1], alpha log-uniform in [0.01, 1].
   auto pts = std::make_shared<std::vector<double>>();
   std::mt19937_64 rng(1010);

@@ -6,6 +6,9 @@
 //    Both compute all four quantities of the family per call (E correlated and separable,
 //    split-sum scale and bias); the error is that of E (height-correlated).
 //  - E_avg: exact (numerics::microfacet_albedo_avg, ~100 E each) against the E_avg tables.
+//  - Render profile (lookup/render.hpp) scalar and batched, and for GGX the renderers' own
+//    tables (32 x 32 float32 bilinear, 128 x 128 half bilinear; validate/render_baseline.hpp),
+//    with generated tables only (validate/pareto_render.cpp).
 //  - Generalized Beckmann (validate/pareto_microfacet_albedo_gbeckmann.cpp): E on the 3-D
 //    (p, beta, v) tables at random p, E at one p on the per-p (beta, v) table against the 3-D
 //    one, and E_avg on (p, beta).
@@ -28,6 +31,7 @@
 #include "numerics/microfacet_albedo.hpp"
 #include "validate/pareto.hpp"
 #include "validate/pareto_microfacet_albedo_gbeckmann.hpp"
+#include "validate/pareto_render.hpp"
 
 namespace brdftab::validate::microfacet_albedo {
 
@@ -189,6 +193,7 @@ std::vector<Quantity> pareto_quantities(const Options& o) {
           }
         }
     }
+    if (src->set) add_render_rows(q, k, o.tables_dir, mu, alpha, exact, ref);
     out.push_back(std::move(q));
     out.push_back(std::move(qa));
   }

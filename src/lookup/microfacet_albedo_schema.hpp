@@ -57,6 +57,18 @@
 //          both largest at mu ~ 0.95-0.98). mu^(1/4) keeps mu-spacing 3e-4 at mu = 1e-3 with the
 //          default step. The range starts at the exact numerics' mu_min = 1e-6. Known limit:
 //          one-sided cubic stencils at mu = 1 and alpha = 0.01 carry the largest errors.
+//   render profile (datasets *_render; lookup/render.hpp): a layout for renderers, chosen
+//          from measured error against lookup time, whose coordinate maps cost square roots
+//          only: alpha^(1/4) (fourth_root) and t(mu; alpha) = (mu (1 + c alpha) / (mu + c
+//          alpha))^(1/4), c = 8. t is a Moebius map in mu that puts a fixed share of the nodes
+//          below mu ~ c alpha (the grazing transition) with a fourth root for the 1 - E ~ mu
+//          log mu start at mu = 0 (t(0) = 0: the table reaches mu = 0). Measured (cubic,
+//          float32, off-grid against the precise tables' nodes, alpha in [0.01, 1]; a
+//          throwaway prototype): 64 x 64 on (alpha^(1/4), mu^(1/4)) GGX 1.8e-5; on (alpha^(1/4),
+//          t) with c = 0.5 / 1 / 2 / 4 / 8 and exponent 1/4: GGX 8.4e-4 / 1.4e-4 / 1.8e-5 /
+//          3.9e-6 / 3.0e-6, Beckmann (c = 8) 4.5e-5, limited by the t axis near mu = 1 at
+//          alpha 0.3-1 (64 x 128: 5.4e-6; 128 x 64: 4.6e-5); bilinear 128 x 128 (64 KB) 5.8e-5
+//          at best. Chosen: 80 x 128 (alpha^(1/4), t), 40 KB per quantity.
 //   alpha  log (and beta): the peak width scales with alpha; E changes on a fixed scale in
 //          ln(alpha) (1 - E ~ alpha^2 for GGX, exp(-1/alpha^2)-small for Beckmann at normal
 //          incidence), so a regular ln(alpha) grid spends its points where E changes.
@@ -85,6 +97,10 @@ inline constexpr AxisSchema kS{"s", lookup::Transform::identity, "1", "sheared c
 inline constexpr AxisSchema kV{"v", lookup::Transform::identity, "1", "blended coordinate of mu = cos(theta_i)",
                                "w r(mu) + (1 - w) t(mu) (derived_axes; lookup/microfacet_albedo_schema.hpp)"};
 inline constexpr AxisSchema kAlpha{"alpha", lookup::Transform::log, "1", "microfacet roughness alpha"};
+// The render profile's axes (see "Render profile" below): alpha^(1/4) and the derived t.
+inline constexpr AxisSchema kAlphaRender{"alpha", lookup::Transform::fourth_root, "1", "microfacet roughness alpha"};
+inline constexpr AxisSchema kT{"t", lookup::Transform::identity, "1", "render coordinate of mu = cos(theta_i)",
+                               "(mu (1 + c alpha) / (mu + c alpha))^(1/4) (derived_axes; lookup/microfacet_albedo_schema.hpp)"};
 inline constexpr AxisSchema kBeta{"beta", lookup::Transform::log, "1", "generalized Beckmann roughness beta"};
 inline constexpr AxisSchema kP{"p", lookup::Transform::x_over_k_plus_x, "1", "generalized Beckmann kurtosis exponent p"};
 
@@ -152,14 +168,43 @@ inline std::string scene_material_dataset(const std::string& material, int quant
   return std::string(kSceneMaterial.name) + material + "_" + std::string(kQuantities[static_cast<std::size_t>(quantity)]);
 }
 
+// The render profile (lookup/render.hpp): per NDF (0 ggx, 1 beckmann) E_corr and E_sep on
+// (alpha^(1/4), t(mu; alpha)), E_avg (corr, sep) on alpha^(1/4); float32, cubic.
+#define BRDFTAB_MFA_RENDER(NDF)                                                                            \
+  DatasetSchema{"microfacet_albedo_" NDF "_E_corr_render", false,                                          \
+                "E_corr(mu, alpha): directional albedo, height-correlated G2 of the " NDF                  \
+                " microfacet BRDF (F = 1), render profile on (alpha^(1/4), t(mu; alpha))", 2, {kAlphaRender, kT}, "1",       \
+                "directional albedo E_corr (render profile)"},                                           \
+  DatasetSchema{"microfacet_albedo_" NDF "_E_sep_render", false,                                           \
+                "E_sep(mu, alpha): directional albedo, separable G1 G1 of the " NDF                        \
+                " microfacet BRDF (F = 1), render profile on (alpha^(1/4), t(mu; alpha))", 2, {kAlphaRender, kT}, "1",       \
+                "directional albedo E_sep (render profile)"},                                            \
+  DatasetSchema{"microfacet_albedo_avg_" NDF "_Eavg_corr_render", false,                                   \
+                "Eavg_corr(alpha) = 2 Integral E_corr(mu) mu dmu of the " NDF                              \
+                " microfacet BRDF, render profile on alpha^(1/4)", 1, {kAlphaRender}, "1",                     \
+                "cosine-weighted average albedo Eavg_corr (render profile)"},                            \
+  DatasetSchema {                                                                                          \
+    "microfacet_albedo_avg_" NDF "_Eavg_sep_render", false,                                                \
+        "Eavg_sep(alpha) = 2 Integral E_sep(mu) mu dmu of the " NDF " microfacet BRDF, render profile on alpha^(1/4)", 1, \
+        { kAlphaRender }, "1", "cosine-weighted average albedo Eavg_sep (render profile)"                   \
+  }
+// Index: ndf * 4 + {0 E_corr, 1 E_sep, 2 Eavg_corr, 3 Eavg_sep}.
+inline constexpr std::array kRenderDatasets{BRDFTAB_MFA_RENDER("ggx"), BRDFTAB_MFA_RENDER("beckmann")};
+#undef BRDFTAB_MFA_RENDER
+inline constexpr const DatasetSchema& render_dataset(int ndf, int index) {
+  return kRenderDatasets[static_cast<std::size_t>(ndf * 4 + index)];
+}
+
 inline constexpr std::array kDatasets = [] {
-  std::array<DatasetSchema, kNdfDatasets.size() + kGBeckmann3d.size() + 1 + kGBeckmannAvg.size() + 1> a{};
+  std::array<DatasetSchema, kNdfDatasets.size() + kGBeckmann3d.size() + 1 + kGBeckmannAvg.size() + 1 +
+                                kRenderDatasets.size()> a{};
   std::size_t i = 0;
   for (const auto& d : kNdfDatasets) a[i++] = d;
   for (const auto& d : kGBeckmann3d) a[i++] = d;
   a[i++] = kGBeckmannMaterial;
   for (const auto& d : kGBeckmannAvg) a[i++] = d;
   a[i++] = kSceneMaterial;
+  for (const auto& d : kRenderDatasets) a[i++] = d;
   return a;
 }();
 
@@ -219,6 +264,21 @@ inline double v_of_mu(const MuBlend& m, double mu) {
   const double t = (one_minus_sqrt_one_minus(mu) - g_lo) / (one_minus_sqrt_one_minus(m.mu_hi) - g_lo);
   return m.root_weight * r + (1 - m.root_weight) * t;
 }
+// The render profile's mu coordinate (lookup/render.hpp; "Render profile" below):
+//   t(mu; alpha) = (mu (1 + c alpha) / (mu + c alpha))^(1/4),  c = mu_t_scale (8),
+// t(0) = 0, t(1) = 1 for every alpha; no mu_lo: the table's t = 0 column holds E at mu = 0.
+inline constexpr double kRenderTScale = 8.0;
+inline double t_of_mu(double c, double mu, double alpha) {
+  const double ca = c * alpha;
+  return std::sqrt(std::sqrt(mu * (1.0 + ca) / (mu + ca)));
+}
+// Its inverse (generators): mu = t^4 c alpha / (1 + c alpha - t^4).
+inline double mu_of_t(double c, double t, double alpha) {
+  const double ca = c * alpha, t4 = (t * t) * (t * t);
+  return t4 >= 1.0 ? 1.0 : t4 * ca / (1.0 + ca - t4);
+}
+inline constexpr std::string_view kDerivedAxesT = "t = sqrt(sqrt(mu * (1 + mu_t_scale * alpha) / (mu + mu_t_scale * alpha)))";
+
 inline constexpr std::string_view kInputsV3 = "p, beta, mu", kInputsV2 = "beta, mu";
 
 inline constexpr std::string_view kDerivedAxesV =
@@ -242,8 +302,9 @@ inline double kulla_conty_fresnel_factor_formula(double f_avg, double e_avg) {
 
 // Dataset attributes of this family (see schema::AttributeRule): a scene slice's exact E_avg
 // (attributes of its E_corr slice); the constants of the sheared s(mu; alpha) of the GGX and
-// Beckmann grids (lookup::detail::read_mu_shear checks them together) and of the blended
-// v(mu) of the generalized Beckmann grids (lookup::detail::read_mu_blend).
+// Beckmann grids (lookup::detail::read_mu_shear checks them together), of the blended
+// v(mu) of the generalized Beckmann grids (lookup::detail::read_mu_blend) and of the render
+// profile's t(mu; alpha) (lookup/render.hpp).
 inline constexpr AttributeRule kAttributes[] = {
     {"Eavg_corr", AttributeKind::number, 0, 1, false},
     {"Eavg_sep", AttributeKind::number, 0, 1, false},
@@ -252,6 +313,7 @@ inline constexpr AttributeRule kAttributes[] = {
     {"mu_v_root_weight", AttributeKind::number, 0, 1, false},
     {"mu_lo", AttributeKind::number, 0, 1, true},
     {"mu_hi", AttributeKind::number, 0, 1, true},
+    {"mu_t_scale", AttributeKind::number, 0, 1e12, true},  // c of the render profile's t(mu; alpha)
 };
 
 }  // namespace brdftab::schema::microfacet_albedo

@@ -210,6 +210,17 @@ def test_derived_axes_reproduced_from_the_file_alone():
             mine = t.from_inputs(B=B, s=s, c=c)
             ref = brdftab.ghs_sigma_rel2(B=B, c=c, s=s, method="table", tables=TABLE_DIR)
             assert inputs == ["B", "s", "c"]
+        elif name.startswith(("microfacet_albedo_ggx_", "microfacet_albedo_beckmann_")) and name.endswith("_render"):
+            # render profile on (alpha^(1/4), t(mu; alpha)) (lookup/render.hpp): t written out
+            # by hand from the attribute mu_t_scale, then brdftab.Table
+            c = float(t.attrs["mu_t_scale"])
+            alpha = np.exp(rng.uniform(np.log(t.axes[0].x[0]), np.log(t.axes[0].x[-1]), 300))
+            mu = rng.uniform(0, 1, 300)
+            mu[:3] = [0.0, 1e-9, 1.0]
+            mine = t.from_inputs(alpha=alpha, mu=mu)
+            tt = np.sqrt(np.sqrt(mu * (1 + c * alpha) / (mu + c * alpha)))
+            ref = brdftab.Table(path, name)(alpha, tt, clamp=True)
+            assert inputs == ["alpha", "mu"]
         elif name.startswith(("microfacet_albedo_ggx_", "microfacet_albedo_beckmann_")):
             # GGX / Beckmann albedo on (alpha, s(mu; alpha)), s sheared along the grazing
             # transition (lookup/microfacet_albedo_schema.hpp)

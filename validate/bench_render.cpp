@@ -1,0 +1,231 @@
+// `brdftab bench` group render/: the render profile (lookup/render.hpp) timed in the same run
+// as the renderers' own tables (validate/render_baseline.hpp) and the precise profile, at the
+// same 65536 random points (mu uniform in [0, 1], sqrt(alpha) uniform in [0.1, 1]: the
+// baselines' domain), 5 repetitions each (Google Benchmark reports mean, median, stddev, cv).
+// Counters: ns_per_call; max_abs_err_vs_precise over all points, against the precise tables
+// (stated error ~1e-8 against the exact numerics); table_bytes.
+//
+// The render tables come from --tables (microfacet_albedo.h5 *_render datasets) when present;
+// otherwise they are built here from that file's precise tables
+// (gen::microfacet_albedo::build_render_from_file, < 1 s), written to a scratch folder and
+// loaded through lookup::render::microfacet_albedo_load like any file.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "generators/microfacet_albedo.hpp"
+#include "lookup/microfacet_albedo.hpp"
+#include "lookup/render.hpp"
+#include "lookup/table_set.hpp"
+#include "validate/bench.hpp"
+#include "validate/render_baseline.hpp"
+
+namespace brdftab::validate::microfacet_albedo {
+
+namespace {
+
+namespace sc = schema::microfacet_albedo;
+
+struct Points {
+  std::vector<double> mu, mu2, alpha;
+};
+
+// The render tables: from dir if it has them, else built from its precise tables into a
+// scratch folder (returned in scratch, to be removed by the caller's owner).
+std::shared_ptr<lookup::TableSet> render_table_set(const std::filesystem::path& dir) {
+  auto ts = std::make_shared<lookup::TableSet>(dir);
+  try {
+    lookup::render::microfacet_albedo_load(*ts, "ggx");
+    return ts;
+  } catch (const std::exception&) {
+  }
+  const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path() / ("brdftab_bench_render_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(scratch);
+  gen::GenerateContext ctx;
+  ctx.out_dir = scratch;
+  gen::write_built_tables(std::string(sc::kFile), gen::microfacet_albedo::build_render_from_file(dir, ctx), ctx);
+  auto out = std::make_shared<lookup::TableSet>(scratch);
+  // Loads every render table now (the TableSet reads lazily), then the folder can go.
+  for (const char* ndf : {"ggx", "beckmann"}) lookup::render::microfacet_albedo_load(*out, ndf);
+  std::filesystem::remove_all(scratch);
+  return out;
+}
+
+template <class F>
+void scalar_bench(const std::string& name, std::shared_ptr<const Points> pts, F f, double err, double bytes, double rel = -1) {
+  benchmark::RegisterBenchmark(name.c_str(), [pts, f, err, bytes, rel](benchmark::State& state) {
+    const std::size_t n = pts->mu.size();
+    for (auto _ : state)
+      for (std::size_t i = 0; i < n; ++i) benchmark::DoNotOptimize(f(*pts, i));
+    per_call(state, n);
+    state.counters["max_abs_err_vs_precise"] = err;
+    state.counters["table_bytes"] = bytes;
+    if (rel >= 0) state.counters["max_rel_err_vs_precise"] = rel;
+  })->Repetitions(5)->ReportAggregatesOnly(true);
+}
+
+template <class F>
+void batch_bench(const std::string& name, std::shared_ptr<const Points> pts, F f, double err, double bytes, double rel = -1) {
+  benchmark::RegisterBenchmark(name.c_str(), [pts, f, err, bytes, rel](benchmark::State& state) {
+    std::vector<double> out(pts->mu.size());
+    for (auto _ : state) {
+      f(*pts, out);
+      benchmark::DoNotOptimize(out.data());
+      benchmark::ClobberMemory();
+    }
+    per_call(state, out.size());
+    state.counters["max_abs_err_vs_precise"] = err;
+    state.counters["table_bytes"] = bytes;
+    if (rel >= 0) state.counters["max_rel_err_vs_precise"] = rel;
+  })->Repetitions(5)->ReportAggregatesOnly(true);
+}
+
+}  // namespace
+
+void register_render_benchmarks(const BenchContext& ctx) {
+  auto pts = std::make_shared<Points>();
+  std::mt19937_64 rng(2828);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  constexpr std::size_t kN = 65536;
+  for (std::size_t i = 0; i < kN; ++i) {
+    const double r = 0.1 + 0.9 * U(rng);
+    pts->mu.push_back(U(rng)), pts->mu2.push_back(U(rng)), pts->alpha.push_back(r * r);
+  }
+  std::shared_ptr<lookup::TableSet> precise_set, render_set;
+  std::shared_ptr<lookup::MicrofacetAlbedoTables> precise[2];
+  std::shared_ptr<lookup::render::MicrofacetAlbedo> render[2];
+  try {
+    precise_set = std::make_shared<lookup::TableSet>(ctx.tables_dir);
+    for (int k = 0; k < 2; ++k)
+      precise[k] = std::make_shared<lookup::MicrofacetAlbedoTables>(
+          lookup::microfacet_albedo_tables(*precise_set, k == 0 ? "ggx" : "beckmann", true));
+    render_set = render_table_set(ctx.tables_dir);
+    for (int k = 0; k < 2; ++k)
+      render[k] = std::make_shared<lookup::render::MicrofacetAlbedo>(
+          lookup::render::microfacet_albedo_load(*render_set, k == 0 ? "ggx" : "beckmann"));
+  } catch (const std::exception&) {
+    return;  // no microfacet_albedo tables in --tables: nothing to compare
+  }
+  using lookup::MicrofacetAlbedoQuantity;
+  // Reference values at every point (precise tables): E_corr, E_sep per NDF, E_avg, lobe.
+  std::vector<double> ref[2][2];
+  for (int k = 0; k < 2; ++k)
+    for (int q = 0; q < 2; ++q) {
+      ref[k][q].resize(kN);
+      for (std::size_t i = 0; i < kN; ++i)  // the precise tables, extrapolated below mu = 1e-6 as the render nodes are
+        ref[k][q][i] = gen::microfacet_albedo::e_from_precise(*precise[k]->e[static_cast<std::size_t>(q)], *precise[k]->shear,
+                                                              pts->mu[i], pts->alpha[i]);
+    }
+  const auto max_err = [&](const std::vector<double>& r, auto&& f) {
+    double e = 0;
+    for (std::size_t i = 0; i < kN; ++i) e = std::max(e, std::abs(f(i) - r[i]));
+    return e;
+  };
+
+  // Baselines: GGX E_corr.
+  const lookup::MicrofacetAlbedoTables& pg = *precise[0];
+  const sc::MuShear shear = *pg.shear;
+  const auto exact = [&pg, shear](double mu, double alpha) {
+    return gen::microfacet_albedo::e_from_precise(*pg.e[0], shear, mu, std::clamp(alpha, 0.01, 1.0));
+  };
+  for (auto [n, half] : {std::pair{32, false}, std::pair{128, true}}) {
+    auto b = std::make_shared<const render_baseline::BilinearTable>(render_baseline::build(n, half, exact));
+    const double err = max_err(ref[0][0], [&](std::size_t i) { return render_baseline::read(*b, pts->mu[i], pts->alpha[i]); });
+    const std::string name = half ? "render/baseline_128x128_half_mu_sqrtalpha/ggx_E_corr"
+                                  : "render/baseline_32x32_float32_sqrtalpha_mu/ggx_E_corr";
+    scalar_bench(name, pts, [b](const Points& p, std::size_t i) { return render_baseline::read(*b, p.mu[i], p.alpha[i]); },
+                 err, static_cast<double>(b->stored_bytes));
+  }
+
+  // The render profile.
+  for (int k = 0; k < 2; ++k) {
+    const std::string ndf = k == 0 ? "ggx" : "beckmann";
+    auto t = render[k];
+    for (int q = 0; q < 2; ++q) {
+      const std::string qn = q == 0 ? "E_corr" : "E_sep";
+      const auto f = q == 0 ? &lookup::render::microfacet_albedo_e_corr : &lookup::render::microfacet_albedo_e_sep;
+      const auto fb = q == 0 ? &lookup::render::microfacet_albedo_e_corr_batch : &lookup::render::microfacet_albedo_e_sep_batch;
+      const double err = max_err(ref[k][q], [&](std::size_t i) { return f(*t, pts->mu[i], pts->alpha[i]); });
+      const double bytes = static_cast<double>(t->e[q].bytes());
+      scalar_bench("render/" + ndf + "_" + qn + "/scalar", pts,
+                   [t, f](const Points& p, std::size_t i) { return f(*t, p.mu[i], p.alpha[i]); }, err, bytes);
+      batch_bench("render/" + ndf + "_" + qn + "/batch", pts,
+                  [t, fb](const Points& p, std::vector<double>& out) { fb(*t, p.mu, p.alpha, out); }, err, bytes);
+    }
+    // E_avg (1-D): against the precise E_avg table.
+    {
+      const lookup::MicrofacetAlbedoTables& pk = *precise[k];
+      const double err = max_err(std::vector<double>(kN, 0.0), [&](std::size_t i) {
+        return lookup::render::microfacet_albedo_eavg_corr(*t, pts->alpha[i]) - lookup::microfacet_albedo_avg(pk, pts->alpha[i]).eavg_corr;
+      });
+      scalar_bench("render/" + ndf + "_Eavg_corr/scalar", pts,
+                   [t](const Points& p, std::size_t i) { return lookup::render::microfacet_albedo_eavg_corr(*t, p.alpha[i]); },
+                   err, static_cast<double>(t->eavg[0].bytes()));
+      batch_bench("render/" + ndf + "_Eavg_corr/batch", pts,
+                  [t](const Points& p, std::vector<double>& out) { lookup::render::microfacet_albedo_eavg_corr_batch(*t, p.alpha, out); },
+                  err, static_cast<double>(t->eavg[0].bytes()));
+    }
+    // Kulla-Conty lobe (F = 1): against the lobe formula on the precise tables.
+    {
+      const lookup::MicrofacetAlbedoTables& pk = *precise[k];
+      const double err = max_err(std::vector<double>(kN, 0.0), [&](std::size_t i) {
+        return lookup::render::microfacet_albedo_kulla_conty_lobe(*t, pts->mu[i], pts->mu2[i], pts->alpha[i]) -
+               lookup::kulla_conty_lobe(pk, pts->mu[i], pts->mu2[i], pts->alpha[i]);
+      });
+      double rel = 0;  // relative: the lobe is ill-conditioned where 1 - E_avg is small (docs/speed.md)
+      for (std::size_t i = 0; i < kN; ++i) {
+        const double r = lookup::kulla_conty_lobe(pk, pts->mu[i], pts->mu2[i], pts->alpha[i]);
+        if (r > 1e-3)
+          rel = std::max(rel, std::abs(lookup::render::microfacet_albedo_kulla_conty_lobe(*t, pts->mu[i], pts->mu2[i], pts->alpha[i]) - r) / r);
+      }
+      const double bytes = static_cast<double>(t->e[0].bytes() + t->eavg[0].bytes());
+      scalar_bench("render/" + ndf + "_kulla_conty_lobe/scalar", pts,
+                   [t](const Points& p, std::size_t i) {
+                     return lookup::render::microfacet_albedo_kulla_conty_lobe(*t, p.mu[i], p.mu2[i], p.alpha[i]);
+                   },
+                   err, bytes, rel);
+      batch_bench("render/" + ndf + "_kulla_conty_lobe/batch", pts,
+                  [t](const Points& p, std::vector<double>& out) {
+                    lookup::render::microfacet_albedo_kulla_conty_lobe_batch(*t, p.mu, p.mu2, p.alpha, out);
+                  },
+                  err, bytes, rel);
+    }
+    // The precise profile at the same points, for the ratio (E_corr, one quantity per call).
+    auto pk = precise[k];
+    auto ps = precise_set;
+    scalar_bench("render/" + ndf + "_E_corr_precise_profile/scalar", pts,
+                 [pk, ps](const Points& p, std::size_t i) {
+                   return lookup::microfacet_albedo(*pk, MicrofacetAlbedoQuantity::e_corr, p.mu[i], p.alpha[i]);
+                 },
+                 0.0, static_cast<double>(pk->e[0]->bytes()));
+  }
+  // Floors: the pieces of a render E read alone (GGX tables).
+  {
+    auto t = render[0];
+    scalar_bench("render/floor/coordinates_only", pts,
+                 [t](const Points& p, std::size_t i) {
+                   const double a = std::min(std::max(t->alpha_lo, p.alpha[i]), t->alpha_hi);
+                   const double mu = std::min(std::max(0.0, p.mu[i]), 1.0), ca = t->t_scale * a;
+                   return std::sqrt(std::sqrt(a)) + std::sqrt(std::sqrt(mu * (1.0 + ca) / (mu + ca)));
+                 },
+                 0.0, 0.0);
+    scalar_bench("render/floor/bicubic_read_only", pts,
+                 [t](const Points& p, std::size_t i) {
+                   // grid coordinates from the inputs by one multiply each (no map)
+                   const auto& g = t->e[0];
+                   return lookup::render::detail::read(g, lookup::render::detail::stencil(p.alpha[i] * (g.n0 - 1), g.n0),
+                                                       lookup::render::detail::stencil(p.mu[i] * (g.n1 - 1), g.n1));
+                 },
+                 0.0, static_cast<double>(t->e[0].bytes()));
+  }
+}
+
+}  // namespace brdftab::validate::microfacet_albedo
