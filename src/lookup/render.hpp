@@ -4,12 +4,7 @@
 // (schema, storage, ranges, the coordinate constants) runs once when the tables are loaded.
 // Coordinate maps cost square roots and one division, no log or pow.
 //
-//   lookup::TableSet ts("tables");
-//   const auto ggx = lookup::render::microfacet_albedo_load(ts, "ggx");     // throws on a bad file
-//   double e   = lookup::render::microfacet_albedo_e_corr(ggx, mu, alpha);
-//   double avg = lookup::render::microfacet_albedo_eavg_corr(ggx, alpha);
-//   double fms = lookup::render::microfacet_albedo_kulla_conty_lobe(ggx, mu_o, mu_i, alpha);
-//   lookup::render::microfacet_albedo_e_corr_batch(ggx, mus, alphas, out);  // == the scalar form
+// Example (built and run by CTest): docs/examples/render_profile.cpp.
 //
 // Tables: the *_render datasets of tables/microfacet_albedo.h5 (schema, axes and the measured
 // choice of layout in lookup/microfacet_albedo_schema.hpp, "Render profile"). Values are read
