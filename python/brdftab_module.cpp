@@ -56,6 +56,8 @@ py::dict evaluate(const cli::Quantity& q_in, const std::string& method, const st
   const cli::Quantity* qp = &q_in;
   std::optional<cli::Quantity> material;
   std::unique_ptr<lookup::TableSet> substituting;
+  if (tables && tables->find('\0') != std::string::npos)
+    throw py::value_error(q_in.name + ": tables: the path contains a NUL character");
   const std::filesystem::path dir = tables ? std::filesystem::path(*tables) : cli::default_tables_dir();
   if (dataset) {
     if (method != "table") throw py::value_error(q_in.name + ": dataset needs method='table'");
@@ -139,10 +141,18 @@ py::dict evaluate(const cli::Quantity& q_in, const std::string& method, const st
   return result;
 }
 
+// A path from Python: a NUL would silently cut it at the C boundary, so it is an error.
+const std::string& checked_path(const std::string& p, const char* what) {
+  if (p.find('\0') != std::string::npos)
+    throw py::value_error(std::string(what) + ": the path contains a NUL character");
+  return p;
+}
+
 // A table over NumPy arrays: t(x0, x1, ...) broadcasts its coordinates.
 class PyTable {
  public:
-  PyTable(const std::string& path, const std::string& dataset) : t_(lookup::load_table(path, dataset)) {}
+  PyTable(const std::string& path, const std::string& dataset)
+      : t_(lookup::load_table(checked_path(path, "Table path"), dataset)) {}
   py::array_t<double> call(const py::args& args, bool clamp) const {
     const int rank = t_.table.rank();
     if (static_cast<int>(args.size()) != rank)

@@ -108,3 +108,11 @@ def test_dataset_per_material_table(tmp_path):
     assert np.max(np.abs(got - brdftab.smith_gb(p=1.7, a=a)["G1"])) <= t.max_abs_error
     with pytest.raises(ValueError, match="column 'p': value 1.8 is outside the valid domain {1.7}"):
         brdftab.smith_gb(p=1.8, a=a, **kw)
+
+
+def test_nul_in_a_path_is_an_error_not_a_cut():
+    # "demo.h5\0junk" must not open demo.h5 (the C side would see the path cut at the NUL).
+    with pytest.raises(ValueError, match="NUL"):
+        brdftab.Table(os.path.join(TABLES, "demo.h5") + "\0junk", "demo_exp_cos")
+    with pytest.raises(ValueError, match="NUL"):
+        brdftab.demo_exp_cos(x=0.5, y=0.5, method="table", tables=TABLES + "\0junk")

@@ -44,6 +44,7 @@ int run_main(int argc, char** argv) {
   g->add_option("--only", gen.only, "generate only these families")->expected(1, -1);
   g->add_option("--threads", gen.threads, "OpenMP threads, 1-1024 (default: all cores)")->check(CLI::Range(1, 1024));
   g->add_flag("--quiet,-q", gen.quiet, "no progress output");
+  g->add_flag("--wait", gen.wait, "if another run is writing into the output folder, wait for it (default: exit 2)");
 
   EvalOptions ev;
   std::string quantities;
@@ -89,6 +90,7 @@ int run_main(int argc, char** argv) {
                 "pbrt-fourier: ls_brdf_modes_material_<name> only)")
       ->check(CLI::IsMember({"header", "npy", "glsl", "exr", "pbrt-fourier"}));
   x->add_option("--out", ex.out_dir, "output folder (default: .)");
+  x->add_flag("--wait", ex.wait, "if another run is writing into the output folder, wait for it (default: exit 2)");
 
   AuditCommandOptions au;
   auto* a = app.add_subcommand("audit", "BRDF audit of a model: positivity/NaN to grazing angles, reciprocity, "

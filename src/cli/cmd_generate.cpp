@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/job_source.hpp"
+#include "cli/output_lock.hpp"
 #include "cli/progress.hpp"
 #include "generators/content_key.hpp"
 #include "generators/family.hpp"
@@ -47,6 +48,17 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
   }
   const auto src = load_jobs("generate", o.manifest, o.scene, o.only, err);
   if (!src) return 2;
+  // One writer per folder, from the up-to-date check to the scene index (output_lock.hpp).
+  OutputLock lock;
+  try {
+    lock = acquire_output_lock(o.out_dir, o.wait);
+  } catch (const OutputLockBusy& e) {
+    err << "brdftab generate: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    err << "brdftab generate: " << e.what() << "\n";
+    return 1;
+  }
   if (o.threads > 0) omp_set_num_threads(o.threads);
   StderrProgress progress(err, isatty(STDERR_FILENO) != 0, o.quiet);
   gen::GenerateContext ctx;

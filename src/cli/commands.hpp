@@ -21,6 +21,7 @@ struct GenerateOptions {
   int threads = 0;
   bool quiet = false;
   bool rebuild = false;            // rebuild files whose content key matches too
+  bool wait = false;               // wait for another run's lock on out_dir instead of exiting 2
 };
 int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err);
 
@@ -66,6 +67,7 @@ struct ExportOptions {
   std::string dataset;
   std::string format = "header";  // header | npy | glsl | exr
   std::filesystem::path out_dir = ".";
+  bool wait = false;  // wait for another run's lock on out_dir instead of exiting 2
 };
 // `export`: one table as a C++ header, .npy files, a GLSL snippet or an OpenEXR image (cmd_export.cpp).
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err);
