@@ -10,11 +10,13 @@
 #include <ostream>
 
 #include "cli/commands.hpp"
+#include "cli/csv.hpp"
 #include "cli/job_source.hpp"
 #include "cli/output_lock.hpp"
 #include "cli/progress.hpp"
 #include "generators/content_key.hpp"
 #include "generators/family.hpp"
+#include "generators/verify.hpp"
 
 namespace brdftab::cli {
 
@@ -70,7 +72,16 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
   // The files to build (up-to-date ones are skipped), then each with progress n/N.
   std::vector<const decltype(src->jobs)::value_type*> todo;
   for (const auto& job : src->jobs) {
-    if (!o.rebuild && gen::table_file_status(o.out_dir / job.file, job.key).state == gen::FileState::up_to_date)
+    bool up_to_date = !o.rebuild && gen::table_file_status(o.out_dir / job.file, job.key).state == gen::FileState::up_to_date;
+    if (up_to_date) {  // and its values right at a few random points (a digest anyone can recompute)
+      const auto v = gen::verify_file(o.out_dir / job.file, job.family, job.entry, gen::kQuickVerify);
+      if (!v.ok()) {
+        err << "brdftab generate: " << job.file << " fails re-measurement (" << escape_control(v.first_problem())
+            << "): rebuilding it\n";
+        up_to_date = false;
+      }
+    }
+    if (up_to_date)
       skipped.push_back(job.file);
     else
       todo.push_back(&job);

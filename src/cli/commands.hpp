@@ -62,6 +62,17 @@ int run_info_markdown(const std::vector<std::filesystem::path>& files, std::ostr
 // `info --json`: every file and table as one JSON document (cmd_info_json.cpp).
 int run_info_json(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err);
 
+// `brdftab verify FILE...`: re-measures each table against the exact numerics (cmd_verify.cpp).
+struct VerifyOptions {
+  std::vector<std::filesystem::path> files;
+  std::size_t samples = 64;  // random off-grid points per table
+  double seconds = 10;       // per table at most
+  std::filesystem::path manifest, scene;  // where the files' entries are (besides the default manifest)
+};
+int run_verify(const VerifyOptions& o, std::ostream& out, std::ostream& err);
+// `brdftab seal FILE...`: re-seals (recomputes the digest of) files edited on purpose (cmd_seal.cpp).
+int run_seal(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err);
+
 struct ExportOptions {
   std::filesystem::path file;
   std::string dataset;

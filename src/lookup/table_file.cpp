@@ -99,6 +99,9 @@ std::vector<unsigned char> trusted_bytes(const std::filesystem::path& file, cons
   switch (verify_digest(bytes, &why)) {
     case DigestStatus::valid: return bytes;
     case DigestStatus::mismatch:
+      fail(file, "", "rejected before parsing: " + why +
+                         "; if you edited it on purpose, re-seal it with `brdftab seal " + file.string() +
+                         "` (then `brdftab verify` re-measures its values)");
     case DigestStatus::malformed: fail(file, "", "rejected before parsing: " + why);
     case DigestStatus::absent: break;
   }
