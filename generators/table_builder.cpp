@@ -25,9 +25,10 @@ using numerics::format_number;
 
 lookup::Table dry_run_placeholder(const std::string& name, const std::vector<lookup::Axis>& axes, lookup::Storage storage,
                                   lookup::Interpolation interpolation) {
+  // 4 points per axis: enough for every interpolation scheme (cubic needs 4)
   std::vector<lookup::Axis> small;
-  for (const auto& a : axes) small.push_back(lookup::make_axis(a.name, a.transform, a.x_lo, a.x_hi, 2, a.scale, a.units));
-  const std::vector<double> zeros(std::size_t(1) << axes.size(), 0.0);
+  for (const auto& a : axes) small.push_back(lookup::make_axis(a.name, a.transform, a.x_lo, a.x_hi, 4, a.scale, a.units));
+  const std::vector<double> zeros(std::size_t(1) << (2 * axes.size()), 0.0);
   return lookup::Table(name, small, zeros, storage, interpolation);
 }
 

@@ -105,7 +105,7 @@ std::vector<TableSummary> write_built_tables(const std::string& file, std::vecto
                                              const GenerateContext& ctx);
 
 // Dry runs report shapes and bytes, not values: a stand-in table on the same ranges with
-// 2 points per axis (so a plan of many materials does not hold their zero-filled grids),
+// 4 points per axis (so a plan of many materials does not hold their zero-filled grids),
 // and the summary's shape and bytes of the real axes.
 lookup::Table dry_run_placeholder(const std::string& name, const std::vector<lookup::Axis>& axes, lookup::Storage storage,
                                   lookup::Interpolation interpolation);

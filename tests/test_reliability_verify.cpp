@@ -51,14 +51,14 @@ TEST_CASE("verify: a generated table passes, and every value 42, stated error 0,
   REQUIRE_MESSAGE(r.status == 0, r.err);
   const fs::path file = d / "out" / "demo.h5";
   r = run_cli("verify " + q(file) + " --manifest " + q(d / "m.json") + " --samples 200");
-  CHECK_MESSAGE(r.status == 0, r.out + r.err);
+  CHECK_MESSAGE(r.status == 0, (r.out + r.err));
   CHECK(contains(r.out, "demo_exp_cos: 200 points"));
   CHECK(contains(r.out, ": ok"));
 
   set_values(file, "demo_exp_cos", 42.0, 0.0);
   testing::reseal(file);
   CHECK(lookup::check_file_digest(file) == lookup::DigestStatus::valid);  // the digest is fooled
-  CHECK(lookup::load_table(file, "demo_exp_cos").table.eval({0.5, 0.5}) == 42.0);
+  CHECK(lookup::load_table(file, "demo_exp_cos").table.eval(std::vector<double>{0.5, 0.5}) == 42.0);
   const auto t0 = std::chrono::steady_clock::now();
   r = run_cli("verify " + q(file) + " --manifest " + q(d / "m.json"));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -78,7 +78,7 @@ TEST_CASE("verify: a generated table passes, and every value 42, stated error 0,
   CHECK(r.status == 0);
   CHECK(contains(r.err, "fails re-measurement"));
   CHECK(contains(r.out, "1 tables in"));
-  CHECK(lookup::load_table(file, "demo_exp_cos").table.eval({0.5, 0.5}) != 42.0);
+  CHECK(lookup::load_table(file, "demo_exp_cos").table.eval(std::vector<double>{0.5, 0.5}) != 42.0);
   r = run_cli("check " + q(d / "out") + " --manifest " + q(d / "m.json"));
   CHECK_MESSAGE(r.status == 0, r.out);
   fs::remove_all(d);
