@@ -97,10 +97,10 @@ void refuse_underflowing_numbers(const std::string& text) {
   }
 }
 
-nlohmann::json parse_manifest_text(const std::string& text) {
-  if (text.size() > kMaxManifestBytes)
-    throw ManifestError("is " + std::to_string(text.size()) + " bytes, more than the " +
-                        std::to_string(kMaxManifestBytes) + " a manifest may have");
+nlohmann::json parse_manifest_text(const std::string& text, std::size_t max_bytes) {
+  if (text.size() > max_bytes)
+    throw ManifestError("is " + std::to_string(text.size()) + " bytes, more than the " + std::to_string(max_bytes) +
+                        " a manifest may have");
   refuse_underflowing_numbers(text);
   // The callback sees every event in order: it tracks the key path (for messages),
   // refuses duplicate keys and nesting deeper than the limit before it is built.

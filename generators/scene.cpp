@@ -119,12 +119,12 @@ Scene parse_scene(const nlohmann::json& j) {
 Scene load_scene(const std::filesystem::path& path) {
   std::string text;
   try {  // a regular file only (a FIFO never blocks); one byte past the cap makes the parser report it
-    text = lookup::read_regular_file(path, kMaxManifestBytes + 1, "scene", lookup::OverCap::prefix);
+    text = lookup::read_regular_file(path, kMaxSceneBytes + 1, "scene", lookup::OverCap::prefix);
   } catch (const lookup::InputFileError& e) {
     throw SceneError(e.what());
   }
   try {
-    return parse_scene(parse_manifest_text(text));
+    return parse_scene(parse_manifest_text(text, kMaxSceneBytes));
   } catch (const ManifestError& e) {
     std::string what = e.what();
     // parse_manifest_text names paths "manifest...": this is a scene.
