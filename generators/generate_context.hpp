@@ -2,9 +2,16 @@
 // What a generator run is given (output folder, progress sink, error-measurement seed) and
 // what it reports per table.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <mutex>
 #include <string>
 #include <vector>
+
+namespace brdftab::lookup {
+struct LoadedTable;
+}
 
 namespace brdftab::gen {
 
@@ -16,6 +23,26 @@ class Progress {
 };
 
 class RowRunner;  // generators/row_runner.hpp
+// Re-measuring a written file (generators/verify.hpp): build_table does not fill the grid;
+// it takes the file's table of the same name and compares it with the exact numerics (the
+// spec's row function) at `samples` random off-grid points, within `seconds` per table.
+struct VerifyResult {
+  std::string dataset;
+  std::size_t samples = 0;     // points measured
+  double stated_abs = 0;       // the file's max_abs_error
+  double worst_abs = 0;        // largest |table - exact| found
+  std::vector<double> worst_at;
+  bool ok = false;
+  std::string why;  // when not ok
+};
+struct VerifyRequest {
+  std::function<const lookup::LoadedTable*(const std::string& dataset)> find;  // null: not in the file
+  std::size_t samples = 64;
+  double seconds_per_table = 5;
+  std::uint64_t seed = 1;
+  std::mutex mutex;
+  std::vector<VerifyResult> results;
+};
 
 struct GenerateContext {
   std::filesystem::path out_dir;
@@ -28,6 +55,8 @@ struct GenerateContext {
   // attributes that follow from the spec (all but the measured errors), no fill and no error
   // measurement.
   bool dry_run = false;
+  // Verify mode (non-null): no table is filled, each is re-measured (see VerifyRequest).
+  VerifyRequest* verify = nullptr;
   // Written as the file-level attribute content_key (generators/content_key.hpp).
   std::string content_key;
   // Who computes the rows (generators/row_runner.hpp): null, this process's OpenMP threads;

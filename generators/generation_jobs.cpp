@@ -9,6 +9,7 @@
 
 #include "generators/code_fingerprint.hpp"
 #include "generators/content_key.hpp"
+#include "lookup/bounded_read.hpp"
 #include "lookup/number_format.hpp"
 #include "tablewrite/temp_file.hpp"
 
@@ -26,6 +27,13 @@ std::vector<FileJob> jobs_from_manifest(const std::vector<ManifestEntry>& entrie
 }
 
 std::string index_body(const ScenePlan& plan);
+
+// "file NAME KEY" per table file of the plan.
+std::string index_files(const ScenePlan& plan) {
+  std::string s;
+  for (const auto& j : plan.jobs) s += "file " + j.file + " " + j.key + "\n";
+  return s;
+}
 
 ScenePlan plan_scene(const Scene& scene) {
   ScenePlan plan;
@@ -53,8 +61,11 @@ ScenePlan plan_scene(const Scene& scene) {
       for (const auto& [k, v] : u.scalars) m.scalars[k] = v;
     }
   }
-  // The key covers the scene and what the index says (forms chosen, scalars, tables).
-  plan.index_key = content_key("scene-index", nlohmann::json{{"scene", scene.normalized}, {"index", index_body(plan)}});
+  // The key covers the scene and what the index says (forms chosen, scalars, tables, and
+  // the content key of each file: a reader refuses a file another run wrote).
+  plan.index_key = content_key("scene-index", nlohmann::json{{"scene", scene.normalized},
+                                                             {"files", index_files(plan)},
+                                                             {"index", index_body(plan)}});
   return plan;
 }
 
@@ -73,7 +84,7 @@ std::string index_body(const ScenePlan& plan) {
 }
 
 std::string scene_index_text(const ScenePlan& plan) {
-  return "brdftab-scene-index 1\ncontent_key " + plan.index_key + "\n" + index_body(plan);
+  return "brdftab-scene-index 1\ncontent_key " + plan.index_key + "\n" + index_files(plan) + index_body(plan);
 }
 
 void write_scene_index(const std::filesystem::path& dir, const ScenePlan& plan) {
@@ -91,7 +102,13 @@ void write_scene_index(const std::filesystem::path& dir, const ScenePlan& plan) 
 }
 
 std::string scene_index_key(const std::filesystem::path& file) {
-  std::ifstream in(file);
+  std::string head;
+  try {  // the first two lines are in the first 4 KiB; a FIFO or device is never opened for reading
+    head = lookup::read_regular_file(file, 4096, "scene index", lookup::OverCap::prefix);
+  } catch (const lookup::InputFileError&) {
+    return "";
+  }
+  std::istringstream in(head);
   std::string magic, word, key;
   std::getline(in, magic);
   if (magic != "brdftab-scene-index 1") return "";

@@ -24,6 +24,7 @@
 #include "generators/preflight.hpp"
 #include "generators/table_builder.hpp"
 #include "lookup/ls_brdf.hpp"
+#include "lookup/table_file.hpp"
 #include "lookup/ls_schema.hpp"
 #include "lookup/number_format.hpp"
 #include "numerics/ls_brdf_modes.hpp"
@@ -256,6 +257,52 @@ std::string zone_domain(const BrdfResolution& res, bool main) {
          ", phi real";
 }
 
+// Verify mode: the file's two zone tables of a material against the exact BRDF at a few
+// random points (measure()), each zone's error against its stated max_abs_error.
+void verify_pair(const std::string& modes, const std::string& corner, double c, const BrdfResolution& res,
+                 const GenerateContext& ctx, lookup::Table& tm, lookup::Table& tc) {
+  VerifyRequest& req = *ctx.verify;
+  const lookup::LoadedTable* fm = req.find(modes);
+  const lookup::LoadedTable* fc = req.find(corner);
+  VerifyResult rm, rc;
+  rm.dataset = modes;
+  rc.dataset = corner;
+  if (!fm || !fc) {
+    rm.why = rc.why = "the file lacks '" + (fm ? corner : modes) + "', which its entry builds";
+  } else {
+    try {
+      const lookup::LsBrdfMaterial eval(fm->table, fc->table, c);
+      BrdfErrorSampling few;
+      few.rows = static_cast<int>(std::max<std::size_t>(1, req.samples / 4));
+      few.per_row = 4;
+      GenerateContext quiet;
+      quiet.error_seed = static_cast<unsigned>(req.seed);
+      const auto w = measure(res, few, quiet, [&](double, double mi, double mo, double phi) { return eval.eval(mi, mo, phi).f; },
+                             [c](double) { return c; });
+      auto judge = [&](VerifyResult& r, const lookup::LoadedTable& t, const Worst& worst) {
+        r.samples = static_cast<std::size_t>(few.rows * few.per_row);
+        r.stated_abs = t.info.attribute_number("max_abs_error", std::nan(""));
+        r.worst_abs = worst.abs;
+        if (!(r.stated_abs >= 0)) r.why = "no stated max_abs_error";
+        else if (worst.abs > 2.0 * r.stated_abs + 1e-13)
+          r.why = "the BRDF from its zone has an error of " + format_number(worst.abs) + " at " + worst.abs_at +
+                  ", above the stated max_abs_error " + format_number(r.stated_abs) + " (x2 allowed)";
+      };
+      judge(rm, *fm, w.first);
+      judge(rc, *fc, w.second);
+      tm = fm->table;
+      tc = fc->table;
+    } catch (const std::exception& e) {
+      rm.why = rc.why = std::string("re-measuring failed: ") + e.what();
+    }
+  }
+  rm.ok = rm.why.empty();
+  rc.ok = rc.why.empty();
+  std::lock_guard lock(req.mutex);
+  req.results.push_back(rm);
+  req.results.push_back(rc);
+}
+
 }  // namespace
 
 std::vector<BuiltTable> build_brdf_material(const std::string& name, double c, double kd, const BrdfResolution& res,
@@ -264,13 +311,21 @@ std::vector<BuiltTable> build_brdf_material(const std::string& name, double c, d
   const ZoneAxes z = zone_axes(res);
   const std::size_t nm = std::size_t(res.modes) * std::size_t(res.mu_points) * std::size_t(res.r_points);
   const std::size_t nc = std::size_t(res.modes) * std::size_t(res.corner_points) * std::size_t(res.corner_r_points);
-  std::vector<double> vm(nm, 0.0), vc(nc, 0.0);
-  if (!ctx.dry_run) fill_at(c, res, z, vm.data(), vc.data(), false);
-  lookup::Table tm(std::string(sc::kBrdfModesMaterial.name) + name, z.main, vm, res.storage, lookup::Interpolation::cubic);
-  lookup::Table tc(std::string(sc::kBrdfCornerMaterial.name) + name, z.corner, vc, res.storage,
-                   lookup::Interpolation::cubic);
+  const bool fill = !ctx.dry_run && !ctx.verify;  // verify mode: re-measured below, not filled
+  const std::string name_m = std::string(sc::kBrdfModesMaterial.name) + name, name_c = std::string(sc::kBrdfCornerMaterial.name) + name;
+  lookup::Table tm, tc;
+  if (fill) {
+    std::vector<double> vm(nm, 0.0), vc(nc, 0.0);
+    fill_at(c, res, z, vm.data(), vc.data(), false);
+    tm = lookup::Table(name_m, z.main, vm, res.storage, lookup::Interpolation::cubic);
+    tc = lookup::Table(name_c, z.corner, vc, res.storage, lookup::Interpolation::cubic);
+  } else {  // shapes only (dry run) or the file's tables (verify, below)
+    tm = dry_run_placeholder(name_m, z.main, res.storage, lookup::Interpolation::cubic);
+    tc = dry_run_placeholder(name_c, z.corner, res.storage, lookup::Interpolation::cubic);
+  }
   std::pair<Worst, Worst> w;
-  if (!ctx.dry_run) {
+  if (ctx.verify) verify_pair(tm.name(), tc.name(), c, res, ctx, tm, tc);
+  if (fill) {
     const lookup::LsBrdfMaterial eval(tm, tc, c);
     w = measure(res, err, ctx, z, {c}, [&](double, double mi, double mo, double phi) { return eval.eval(mi, mo, phi).f; },
                 [c](double) { return c; });
@@ -283,6 +338,10 @@ std::vector<BuiltTable> build_brdf_material(const std::string& name, double c, d
                        "c = " + format_number(c) + ", " + zone_domain(res, true), w.first, res, err, false, seconds / 2));
   out.push_back(finish(std::move(tc), std::string(sc::kBrdfCornerMaterial.quantity) + name + "' at c = " + format_number(c),
                        "c = " + format_number(c) + ", " + zone_domain(res, false), w.second, res, err, false, seconds / 2));
+  if (ctx.dry_run) {
+    set_dry_run_shape(out[0].summary, z.main, res.storage);
+    set_dry_run_shape(out[1].summary, z.corner, res.storage);
+  }
   for (auto& t : out) {
     t.dataset.attributes["material"] = name;
     t.dataset.attributes["ls_c"] = c;
@@ -300,7 +359,18 @@ std::vector<BuiltTable> build_brdf_generic(double c_lo, double c_hi, int c_point
   const std::size_t pc = std::size_t(res.modes) * std::size_t(res.corner_points) * std::size_t(res.corner_r_points);
   std::vector<double> vm(pm * std::size_t(c_points), 0.0), vc(pc * std::size_t(c_points), 0.0);
   std::atomic<int> done{0};
-  if (!ctx.dry_run)
+  const bool fill = !ctx.dry_run && !ctx.verify;
+  if (ctx.verify) {
+    for (const std::string& name : {std::string(sc::kBrdfModes.name), std::string(sc::kBrdfCorner.name)}) {
+      VerifyResult r;
+      r.dataset = name;
+      r.ok = true;
+      r.why = "not re-measured (the generic BRDF-mode grid over c: too costly for a quick check)";
+      std::lock_guard lock(ctx.verify->mutex);
+      ctx.verify->results.push_back(r);
+    }
+  }
+  if (fill)
     parallel_for(std::size_t(c_points), [&](std::size_t i) {
       fill_at(ca.value(int(i)), res, z, vm.data() + i * pm, vc.data() + i * pc, true);
       const int d = ++done;
@@ -312,7 +382,7 @@ std::vector<BuiltTable> build_brdf_generic(double c_lo, double c_hi, int c_point
   lookup::Table tm(std::string(sc::kBrdfModes.name), am, vm, res.storage, lookup::Interpolation::cubic);
   lookup::Table tc(std::string(sc::kBrdfCorner.name), ac, vc, res.storage, lookup::Interpolation::cubic);
   std::pair<Worst, Worst> w;
-  if (!ctx.dry_run) {
+  if (fill) {
     const lookup::LsBrdfTables eval(tm, tc);
     const double u_lo = std::sqrt(1 - c_hi), u_hi = std::sqrt(1 - c_lo);
     std::vector<double> edge_c = edge_values(ca);

@@ -1,12 +1,16 @@
 #include "generators/manifest.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <cmath>
 #include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
 
+#include "lookup/bounded_read.hpp"
 #include "generators/family.hpp"
 #include "numerics/domain_check.hpp"
 
@@ -61,10 +65,43 @@ std::string describe_json(const nlohmann::json& j) {
   return bounded_text(j.dump(), 40);
 }
 
-nlohmann::json parse_manifest_text(const std::string& text) {
-  if (text.size() > kMaxManifestBytes)
-    throw ManifestError("is " + std::to_string(text.size()) + " bytes, more than the " +
-                        std::to_string(kMaxManifestBytes) + " a manifest may have");
+// A number written nonzero that a double holds only as 0 (1e-400): JSON parsers round it to
+// 0 silently. Scans the number tokens outside strings; throws naming the token and line.
+void refuse_underflowing_numbers(const std::string& text) {
+  bool in_string = false;
+  std::size_t line = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') ++line;
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') {
+      in_string = true;
+      continue;
+    }
+    if (c != '-' && !(c >= '0' && c <= '9')) continue;
+    std::size_t j = i;
+    while (j < text.size() && std::strchr("+-.0123456789eE", text[j]) && text[j] != '\0') ++j;
+    const std::string token = text.substr(i, j - i);
+    i = j - 1;
+    const bool nonzero_digit = token.find_first_of("123456789") < token.find_first_of("eE");
+    if (!nonzero_digit) continue;
+    errno = 0;
+    const double v = std::strtod(token.c_str(), nullptr);
+    if (v == 0 && errno == ERANGE)
+      throw ManifestError("manifest: line " + std::to_string(line) + ": number " + bounded_text(token, 40) +
+                          " underflows a double (nonzero, magnitude below 4.9e-324)");
+  }
+}
+
+nlohmann::json parse_manifest_text(const std::string& text, std::size_t max_bytes) {
+  if (text.size() > max_bytes)
+    throw ManifestError("is " + std::to_string(text.size()) + " bytes, more than the " + std::to_string(max_bytes) +
+                        " a manifest may have");
+  refuse_underflowing_numbers(text);
   // The callback sees every event in order: it tracks the key path (for messages),
   // refuses duplicate keys and nesting deeper than the limit before it is built.
   std::vector<std::set<std::string>> keys;
@@ -255,13 +292,11 @@ std::vector<ManifestEntry> parse_manifest(const nlohmann::json& manifest) {
 }
 
 std::vector<ManifestEntry> load_manifest(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ManifestError("manifest '" + path.string() + "': cannot open");
   std::string text;
-  char buf[65536];
-  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
-    text.append(buf, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxManifestBytes) break;  // parse_manifest_text reports it
+  try {  // a regular file only (a FIFO never blocks); one byte past the cap makes the parser report it
+    text = lookup::read_regular_file(path, kMaxManifestBytes + 1, "manifest", lookup::OverCap::prefix);
+  } catch (const lookup::InputFileError& e) {
+    throw ManifestError(e.what());
   }
   try {
     return parse_manifest(parse_manifest_text(text));

@@ -29,6 +29,8 @@ class ManifestError : public std::runtime_error {
 };
 
 inline constexpr std::size_t kMaxManifestBytes = std::size_t(1) << 20;  // 1 MiB
+// A scene file lists materials (~65 bytes each): 16 MiB holds ~250,000.
+inline constexpr std::size_t kMaxSceneBytes = std::size_t(16) << 20;
 inline constexpr int kMaxManifestDepth = 32;
 
 // A short, single-line description of a JSON value for error messages: primitives up to
@@ -39,7 +41,7 @@ std::string describe_json(const nlohmann::json& j);
 std::string bounded_text(const std::string& s, std::size_t max = 60);
 // Parses manifest text (what load_manifest reads): size and depth limits, duplicate keys,
 // JSON errors as ManifestError naming the key path where it happened.
-nlohmann::json parse_manifest_text(const std::string& text);
+nlohmann::json parse_manifest_text(const std::string& text, std::size_t max_bytes = kMaxManifestBytes);
 
 struct ManifestEntry {
   std::string family;

@@ -580,7 +580,7 @@ void build_materials(const Config& c, const GenerateContext& ctx, std::vector<Bu
     // E_avg of the material (exact, numerics::microfacet_albedo_avg's nodes and weights, the
     // node values spread over threads): attributes Eavg_corr, Eavg_sep of its E_corr table.
     numerics::MicrofacetAlbedoAvg avg{};
-    if (!ctx.dry_run) {
+    if (!ctx.dry_run && !ctx.verify) {  // attributes only: not needed to re-measure
       std::vector<double> w;
       std::vector<double> mus = numerics::microfacet_albedo_avg_nodes(m.roughness, &w);
       mus.push_back(numerics::kAlbedoMuMin);

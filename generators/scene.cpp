@@ -6,6 +6,7 @@
 #include <regex>
 #include <set>
 
+#include "lookup/bounded_read.hpp"
 #include "generators/family.hpp"
 #include "generators/scene_models.hpp"
 #include "lookup/number_format.hpp"
@@ -121,17 +122,14 @@ Scene parse_scene(const nlohmann::json& j) {
 }
 
 Scene load_scene(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError("scene '" + path.string() + "': cannot open");
   std::string text;
-  char buf[65536];
-  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
-    text.append(buf, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxManifestBytes) break;
+  try {  // a regular file only (a FIFO never blocks); one byte past the cap makes the parser report it
+    text = lookup::read_regular_file(path, kMaxSceneBytes + 1, "scene", lookup::OverCap::prefix);
+  } catch (const lookup::InputFileError& e) {
+    throw SceneError(e.what());
   }
-  if (in.bad()) throw SceneError("scene '" + path.string() + "': cannot read");
   try {
-    return parse_scene(parse_manifest_text(text));
+    return parse_scene(parse_manifest_text(text, kMaxSceneBytes));
   } catch (const ManifestError& e) {
     std::string what = e.what();
     // parse_manifest_text names paths "manifest...": this is a scene.

@@ -7,12 +7,15 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <random>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+
+#include "lookup/table_file.hpp"
 
 #include "generators/preflight.hpp"
 #include "generators/row_runner.hpp"
@@ -21,6 +24,22 @@
 namespace brdftab::gen {
 
 using numerics::format_number;
+
+lookup::Table dry_run_placeholder(const std::string& name, const std::vector<lookup::Axis>& axes, lookup::Storage storage,
+                                  lookup::Interpolation interpolation) {
+  // 4 points per axis: enough for every interpolation scheme (cubic needs 4)
+  std::vector<lookup::Axis> small;
+  for (const auto& a : axes) small.push_back(lookup::make_axis(a.name, a.transform, a.x_lo, a.x_hi, 4, a.scale, a.units));
+  const std::vector<double> zeros(std::size_t(1) << (2 * axes.size()), 0.0);
+  return lookup::Table(name, small, zeros, storage, interpolation);
+}
+
+void set_dry_run_shape(TableSummary& s, const std::vector<lookup::Axis>& axes, lookup::Storage storage) {
+  s.shape.clear();
+  std::size_t values = 1;
+  for (const auto& a : axes) s.shape.push_back(static_cast<std::size_t>(a.n)), values *= static_cast<std::size_t>(a.n);
+  s.bytes = values * (storage == lookup::Storage::float32 ? 4 : 8);
+}
 
 std::vector<double> axis_values(const AxisSpec& spec) {
   const lookup::Axis a = lookup::make_axis(spec.name, spec.transform, spec.lo, spec.hi, spec.n, spec.scale, spec.units);
@@ -202,21 +221,129 @@ BuiltTable dry_run_table(const TableSpec& spec, const RowFunction& row) {
   // machine's thread count (reproducible decisions); timed samples are wall time of a row.
   const double cpu_seconds = seconds;
   if (axes.size() >= 2 && !(spec.cost_row_seconds >= 0)) seconds /= std::max(1, omp_get_max_threads());
-  const std::vector<double> zeros(values, 0.0);
   BuiltTable out;
-  out.dataset.table = lookup::Table(spec.dataset, axes, zeros, spec.storage, spec.interpolation);
+  out.dataset.table = dry_run_placeholder(spec.dataset, axes, spec.storage, spec.interpolation);
   out.dataset.quantity = spec.quantity;
   set_spec_attributes(spec, n_edge, out.dataset.attributes);
   TableSummary& s = out.summary;
   s.dataset = spec.dataset;
-  for (const auto& ax : axes) s.shape.push_back(static_cast<std::size_t>(ax.n));
+  set_dry_run_shape(s, axes, spec.storage);
   s.storage = std::string(lookup::storage_name(spec.storage));
   s.interpolation = std::string(lookup::interpolation_name(spec.interpolation));
-  s.bytes = out.dataset.table.bytes();
   s.seconds = seconds;
   s.cpu_seconds = cpu_seconds;
   s.row_seconds = setup + static_cast<double>(n_last) * per;
   return out;
+}
+
+// How much a re-measured error may exceed the stated one: the stated error is the largest
+// of the generator's own off-grid samples, and fresh random points may land a little
+// above it. A table whose values were changed misses by far more.
+constexpr double kVerifyErrorFactor = 2.0;
+
+// Verify mode: the file's table against the exact numerics at random off-grid points.
+BuiltTable verify_table(const TableSpec& spec, const RowFunction& row, const GenerateContext& ctx) {
+  VerifyRequest& req = *ctx.verify;
+  VerifyResult res;
+  res.dataset = spec.dataset;
+  BuiltTable out;
+  out.summary.dataset = spec.dataset;
+  auto finish = [&](BuiltTable b) {
+    std::lock_guard lock(req.mutex);
+    req.results.push_back(res);
+    return b;
+  };
+  const lookup::LoadedTable* lt = req.find(spec.dataset);
+  if (!lt) {
+    res.why = "the file has no table '" + spec.dataset + "', which its entry builds";
+    std::vector<lookup::Axis> axes;
+    for (const auto& a : spec.axes) axes.push_back(lookup::make_axis(a.name, a.transform, a.lo, a.hi, a.n, a.scale, a.units));
+    std::size_t n = 1;
+    for (const auto& a : axes) n *= static_cast<std::size_t>(a.n);
+    out.dataset.table = lookup::Table(spec.dataset, axes, std::vector<double>(n, 0.0), spec.storage, spec.interpolation);
+    return finish(std::move(out));
+  }
+  const lookup::Table& table = lt->table;
+  out.dataset.table = table;
+  out.dataset.quantity = spec.quantity;
+  const int rank = static_cast<int>(spec.axes.size());
+  // The grid must be the one the entry builds (the values are then measured against it).
+  std::string grid_problem;
+  if (table.rank() != rank) grid_problem = "rank " + std::to_string(table.rank()) + ", the entry builds " + std::to_string(rank);
+  for (int d = 0; d < rank && grid_problem.empty(); ++d) {
+    const auto& s = spec.axes[d];
+    const lookup::Axis want = lookup::make_axis(s.name, s.transform, s.lo, s.hi, s.n, s.scale, s.units);
+    const lookup::Axis& got = table.axis(d);
+    const double tol = 1e-9 * std::max(1.0, std::abs(want.u0) + std::abs(want.du) * want.n);
+    if (got.name != want.name || got.transform != want.transform || got.n != want.n ||
+        std::abs(got.u0 - want.u0) > tol || std::abs(got.du - want.du) > tol)
+      grid_problem = "axis " + std::to_string(d) + " ('" + got.name + "') is not the grid its entry builds";
+  }
+  const double stated = lt->info.attribute_number("max_abs_error", std::nan(""));
+  res.stated_abs = stated;
+  if (!grid_problem.empty()) {
+    res.why = grid_problem;
+    return finish(std::move(out));
+  }
+  if (!(stated >= 0)) {
+    res.why = "no stated max_abs_error";
+    return finish(std::move(out));
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::size_t n = std::max<std::size_t>(1, req.samples);
+  struct Sample {
+    bool done = false;
+    double err = 0, exact = 0;
+    std::vector<double> at;
+    std::string bad;
+  };
+  std::vector<Sample> samples(n);
+  std::vector<lookup::Axis> axes_copy;
+  for (int d = 0; d < rank; ++d) axes_copy.push_back(table.axis(d));
+  GenerateContext quiet;  // no progress lines for a few points
+  parallel_rows(n, quiet, spec.dataset + ": verify", [&](std::size_t i) {
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > req.seconds_per_table) return;
+    std::mt19937_64 rng(req.seed * 0x9E3779B97F4A7C15ull + 1000003ull * i + std::hash<std::string>{}(spec.dataset));
+    auto uniform01 = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+    std::vector<double> point(rank);
+    for (int d = 0; d < rank; ++d) {
+      const lookup::Axis& a = axes_copy[d];
+      double f = uniform01();
+      if (f == 0) f = 0.5;
+      point[d] = std::clamp(lookup::invert_transform(a.transform, a.u0 + f * (a.n - 1) * a.du, a.scale), a.x_lo, a.x_hi);
+    }
+    double exact = 0;
+    const double last = point.back();
+    row(std::span<const double>(point.data(), rank - 1), std::span<const double>(&last, 1), std::span<double>(&exact, 1));
+    Sample& s = samples[i];
+    s.at = point;
+    s.exact = exact;
+    if (!std::isfinite(exact)) {
+      s.bad = "the exact value is not finite";
+    } else {
+      const double approx = table.eval(point);
+      s.err = std::isfinite(approx) ? std::abs(approx - exact) : INFINITY;
+    }
+    s.done = true;
+  });
+  const double allowed_factor = kVerifyErrorFactor;
+  for (const Sample& s : samples) {
+    if (!s.done) continue;
+    ++res.samples;
+    if (!s.bad.empty() && res.why.empty()) res.why = s.bad;
+    const double allowed = allowed_factor * stated + 1e-13 * std::max(1.0, std::abs(s.exact));
+    if (s.err > res.worst_abs) res.worst_abs = s.err, res.worst_at = s.at;
+    if (s.err > allowed && res.why.empty()) {
+      std::string where;
+      for (int d = 0; d < rank; ++d) where += (d ? ", " : "") + axes_copy[d].name + " = " + format_number(s.at[d]);
+      res.why = "at " + where + " the table gives an error of " + format_number(s.err) + " against the exact value " +
+                format_number(s.exact) + ", above the stated max_abs_error " + format_number(stated) + " (x" +
+                format_number(allowed_factor) + " allowed)";
+    }
+  }
+  if (res.samples == 0 && res.why.empty()) res.why = "no point measured within the time limit";
+  res.ok = res.why.empty();
+  return finish(std::move(out));
 }
 
 }  // namespace
@@ -225,6 +352,7 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
   const auto t0 = std::chrono::steady_clock::now();
   check_table_spec(spec);  // before any work: a grid the reader accepts, a bounded size
   if (ctx.dry_run) return dry_run_table(spec, row);
+  if (ctx.verify) return verify_table(spec, row, ctx);
   const int rank = static_cast<int>(spec.axes.size());
   if (rank < 1 || rank > lookup::kMaxRank)
     throw std::invalid_argument("table '" + spec.dataset + "': rank " + std::to_string(rank) + " is outside 1..4");

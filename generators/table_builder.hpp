@@ -134,6 +134,13 @@ BuiltTable build_table(const TableSpec& spec, const RowFunction& row, const Gene
 std::vector<TableSummary> write_built_tables(const std::string& file, std::span<const schema::DatasetSchema> schemas,
                                              std::vector<BuiltTable> tables, const GenerateContext& ctx);
 
+// Dry runs report shapes and bytes, not values: a stand-in table on the same ranges with
+// 4 points per axis (so a plan of many materials does not hold their zero-filled grids),
+// and the summary's shape and bytes of the real axes.
+lookup::Table dry_run_placeholder(const std::string& name, const std::vector<lookup::Axis>& axes, lookup::Storage storage,
+                                  lookup::Interpolation interpolation);
+void set_dry_run_shape(TableSummary& s, const std::vector<lookup::Axis>& axes, lookup::Storage storage);
+
 // Physical grid values of an axis (regular in the transformed coordinate).
 std::vector<double> axis_values(const AxisSpec& spec);
 

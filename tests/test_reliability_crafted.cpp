@@ -418,3 +418,23 @@ TEST_CASE("crafted: a valid table with its axes swapped, or holding another quan
                        doctest::Contains("quantity is \"crafted\", expected one starting with \"H_iso(\""),
                        lookup::TableFileError);
 }
+
+TEST_CASE("crafted: a table stored in one-value chunks is refused from its chunk count (loading stays bounded)") {
+  const auto dir = fresh_dir("tiny_chunks");
+  Craft tiny;
+  tiny.dims = {64, 64};
+  tiny.dcpl = [](hid_t dcpl) {
+    hsize_t chunk[2] = {1, 1};
+    H5Pset_chunk(dcpl, 2, chunk);
+  };
+  const std::string why = load_error(craft(dir / "tiny.h5", tiny));
+  CHECK(has(why, "4096 chunks"));
+  CHECK(has(why, "refused"));
+  Craft fair;  // 8 chunks of 512 values: allowed
+  fair.dims = {64, 64};
+  fair.dcpl = [](hid_t dcpl) {
+    hsize_t chunk[2] = {8, 64};
+    H5Pset_chunk(dcpl, 2, chunk);
+  };
+  CHECK(load_error(craft(dir / "fair.h5", fair)) == "(accepted)");
+}

@@ -71,6 +71,7 @@ int run_main(int argc, char** argv) {
   g->add_flag("--quiet,-q", gen.quiet, "no progress output");
   g->add_flag("--discard-checkpoint", gen.discard_checkpoint,
               "discard a checkpoint left by a run of another content key instead of stopping (docs/clusters.md)");
+  g->add_flag("--wait", gen.wait, "if another run is writing into the output folder, wait for it (default: exit 2)");
 
   EvalOptions ev;
   std::string quantities;
@@ -126,6 +127,21 @@ int run_main(int argc, char** argv) {
                 "pbrt-fourier: ls_brdf_modes_material_<name> only)")
       ->check(CLI::IsMember({"header", "npy", "glsl", "exr", "pbrt-fourier"}));
   x->add_option("--out", ex.out_dir, "output folder (default: .)");
+  x->add_flag("--wait", ex.wait, "if another run is writing into the output folder, wait for it (default: exit 2)");
+
+  VerifyOptions vf;
+  auto* vfy = app.add_subcommand("verify", "re-measure each table at random off-grid points against the exact numerics; "
+                                           "fail if its error exceeds the stated one");
+  vfy->add_option("files", vf.files, "table files (.h5)")->required();
+  vfy->add_option("--samples", vf.samples, "random points per table, 1-1000000 (default 64)")->check(CLI::Range(1, 1000000));
+  vfy->add_option("--seconds", vf.seconds, "time limit per table in seconds (default 10)")->check(CLI::Range(0.01, 86400.0));
+  auto* vfy_manifest = vfy->add_option("--manifest", vf.manifest, "the manifest the files were generated from")
+                           ->check(CLI::ExistingFile);
+  vfy->add_option("--scene", vf.scene, "the scene the files were generated from")->excludes(vfy_manifest);
+  std::vector<std::filesystem::path> seal_files;
+  auto* sl = app.add_subcommand("seal", "re-seal table files edited on purpose (recompute their digest); "
+                                        "`verify` then re-measures their values");
+  sl->add_option("files", seal_files, "table files (.h5)")->required();
 
   AuditCommandOptions au;
   auto* a = app.add_subcommand("audit", "BRDF audit of a model: positivity/NaN to grazing angles, reciprocity, "
@@ -166,7 +182,7 @@ int run_main(int argc, char** argv) {
   s->add_option("--models", sy.models, "comma-separated models to cycle through (default ghs,ls)");
 
   bool allow_foreign = false, force = false;
-  for (CLI::App* sub : {static_cast<CLI::App*>(&app), e, v, b, i, x, p, c})
+  for (CLI::App* sub : {static_cast<CLI::App*>(&app), e, v, b, i, x, p, c, vfy})
     sub->add_flag("--allow-foreign", allow_foreign,
                   "read table files without a brdftab digest (each is validated in a child process first)");
   g->add_flag("--force", force, "generate tables above the pre-flight size limit (4M values)");
@@ -217,6 +233,8 @@ int run_main(int argc, char** argv) {
     return run_audit(au, std::cout, std::cerr);
   }
   if (x->parsed()) return run_export(ex, std::cout, std::cerr);
+  if (vfy->parsed()) return run_verify(vf, std::cout, std::cerr);
+  if (sl->parsed()) return run_seal(seal_files, std::cout, std::cerr);
   if (i->parsed()) {
     if (info_json) return run_info_json({info_files.begin(), info_files.end()}, std::cout, std::cerr);
     if (info_markdown) return run_info_markdown({info_files.begin(), info_files.end()}, std::cout, std::cerr);

@@ -147,6 +147,16 @@ class Spool {
   std::FILE* file_ = nullptr;
 };
 
+// The longest CSV line (header or row) eval reads, and the most header columns: a line of
+// 10^6 columns fits; past the cap, a clear error and exit 2 instead of memory exhaustion.
+constexpr std::size_t kMaxCsvLineBytes = std::size_t(16) << 20;
+constexpr std::size_t kMaxCsvColumns = std::size_t(1) << 21;
+// The most bytes of raw lines one chunk of rows holds between the passes.
+constexpr std::size_t kMaxChunkTextBytes = std::size_t(64) << 20;
+struct LineTooLong {
+  std::uint64_t line;
+};
+
 // Lines of a stream, read in blocks of 1 MiB (one istream::read per block instead of a
 // locked character-by-character read of std::cin). A line ends at LF, CR LF or a lone CR
 // (old Mac files); a UTF-8 byte order mark before the first line is dropped. Linear in
@@ -154,8 +164,12 @@ class Spool {
 class LineReader {
  public:
   explicit LineReader(std::istream& in) : in_(in) {}
+  // Throws LineTooLong once a line passes kMaxCsvLineBytes (memory stays bounded).
   bool next(std::string& line) {
     while (true) {
+      if (buf_.size() - pos_ > kMaxCsvLineBytes + 2 &&
+          buf_.find_first_of("\r\n", pos_) == std::string::npos)
+        throw LineTooLong(line_ + 1);
       const std::size_t nl = buf_.find_first_of("\r\n", scan_);
       // A CR at the end of the buffer may be the first half of CR LF: read on to decide.
       const bool undecided = nl != std::string::npos && buf_[nl] == '\r' && nl + 1 == buf_.size() && !eof_;
@@ -164,12 +178,14 @@ class LineReader {
         std::size_t after = nl + 1;
         if (buf_[nl] == '\r' && after < buf_.size() && buf_[after] == '\n') ++after;
         pos_ = scan_ = after;
+        if (line.size() > kMaxCsvLineBytes) throw LineTooLong(line_ + 1);
         return deliver(line);
       }
       if (eof_) {
         if (pos_ == buf_.size()) return false;
         line.assign(buf_, pos_);
         pos_ = scan_ = buf_.size();
+        if (line.size() > kMaxCsvLineBytes) throw LineTooLong(line_ + 1);
         return deliver(line);
       }
       buf_.erase(0, pos_);
@@ -186,12 +202,14 @@ class LineReader {
 
  private:
   bool deliver(std::string& line) {
+    ++line_;
     if (first_ && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
     first_ = false;
     return true;
   }
   static constexpr std::size_t kBlock = std::size_t(1) << 20;
   bool first_ = true;
+  std::uint64_t line_ = 0;  // lines delivered
   std::istream& in_;
   std::string buf_;
   std::size_t pos_ = 0, scan_ = 0;  // start of the next line; where the newline search resumes
@@ -214,7 +232,7 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
   if (!q) {
     std::vector<std::string> names;
     for (const auto& x : all_quantities()) names.push_back(x.name);
-    err << "brdftab eval: unknown quantity '" << o.quantity << "' (known: " << list(names) << ")\n";
+    err << "brdftab eval: unknown quantity '" << escape_control(o.quantity.substr(0, 200)) << "' (known: " << list(names) << ")\n";
     return 2;
   }
   // `--dataset` naming a per-material table: q for that material (eval_material.cpp).
@@ -232,7 +250,7 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
   if (method_it == q->methods.end()) {
     std::vector<std::string> names;
     for (const auto& [k, v] : q->methods) names.push_back(k);
-    err << "brdftab eval " << q->name << ": no method '" << o.method << "' for this quantity (available: "
+    err << "brdftab eval " << q->name << ": no method '" << escape_control(o.method.substr(0, 200)) << "' for this quantity (available: "
         << list(names) << ")\n";
     return 2;
   }
@@ -247,18 +265,38 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
 
   LineReader reader(in);
   std::string line;
-  if (!reader.next(line)) {
+  auto too_long = [&](const LineTooLong& e) {
+    err << what << ": line " << e.line << " is longer than " << kMaxCsvLineBytes
+        << " bytes (the limit for a CSV line or header): refused\n";
+    return 2;
+  };
+  bool have_header = false;
+  try {
+    have_header = reader.next(line);
+  } catch (const LineTooLong& e) {
+    return too_long(e);
+  }
+  if (!have_header) {
     err << what << ": empty input; expected a CSV header naming the columns " << list(param_names) << "\n";
     return 2;
   }
-  auto header = split_csv_line(line);
+  auto header = split_csv_line(line, kMaxCsvColumns + 1);
+  if (header.size() > kMaxCsvColumns) {
+    err << what << ": header (line 1): more than " << kMaxCsvColumns << " columns: refused\n";
+    return 2;
+  }
+  for (const auto& h : header)
+    if (h.size() > 4096) {
+      err << what << ": header (line 1): a column name is longer than 4096 bytes: refused\n";
+      return 2;
+    }
   for (auto& h : header) h = current_name(names::Kind::column, h, err);
   const std::size_t ncol = header.size(), np = q->parameters.size();
   std::unordered_map<std::string_view, std::size_t> column_by_name;
   column_by_name.reserve(ncol);
   for (std::size_t c = 0; c < ncol; ++c)
     if (!column_by_name.emplace(header[c], c).second) {
-      err << what << ": header (line 1): column '" << header[c] << "' appears twice\n";
+      err << what << ": header (line 1): column '" << escape_control(header[c]) << "' appears twice\n";
       return 2;
     }
   // column_of[i] = kAbsent: an optional parameter without a column (its fallback is used).
@@ -282,7 +320,8 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
     }
     if (it == column_by_name.end()) {
       err << what << ": header (line 1): missing column '" << q->parameters[i].name
-          << "' (this quantity needs columns " << list(param_names) << "; got " << list(header) << ")\n";
+          << "' (this quantity needs columns " << list(param_names) << "; got "
+          << escape_control(list(header).substr(0, 400)) << ")\n";
       return 2;
     }
     column_of[i] = it->second;
@@ -306,10 +345,16 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
     std::size_t rows_before = 0, line_no = 1;
     for (bool more = true; more;) {
       ch.rows = 0;
-      while (ch.rows < chunk && (more = reader.next(ch.text[ch.rows]))) {
-        ++line_no;
-        if (ch.text[ch.rows].find_first_not_of(" \t\r") == std::string::npos) continue;  // blank line
-        ch.line[ch.rows++] = line_no;
+      std::size_t chunk_bytes = 0;
+      try {
+        while (ch.rows < chunk && chunk_bytes < kMaxChunkTextBytes && (more = reader.next(ch.text[ch.rows]))) {
+          ++line_no;
+          if (ch.text[ch.rows].find_first_not_of(" \t\r") == std::string::npos) continue;  // blank line
+          chunk_bytes += ch.text[ch.rows].size();
+          ch.line[ch.rows++] = line_no;
+        }
+      } catch (const LineTooLong& e) {
+        return too_long(e);
       }
       const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(ch.rows);
 #pragma omp parallel for schedule(dynamic, 256)
@@ -317,12 +362,13 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
         std::string& text = ch.text[r];
         std::string& problem = ch.problem[r];
         problem.clear();
-        const auto cells = split_csv_line(text);
+        const auto cells = split_csv_line(text, ncol + 1);
         auto where = [&] {
           return "row " + std::to_string(rows_before + r + 1) + " (line " + std::to_string(ch.line[r]) + ")";
         };
         if (cells.size() != ncol) {
-          problem = where() + ": " + std::to_string(cells.size()) + " cells, the header has " + std::to_string(ncol);
+          problem = where() + ": " + (cells.size() > ncol ? "more than " + std::to_string(ncol) : std::to_string(cells.size())) +
+                    " cells, the header has " + std::to_string(ncol);
           continue;
         }
         double* v = ch.inputs.data() + r * np;
@@ -337,7 +383,8 @@ int run_eval(const EvalOptions& o, std::istream& in, std::ostream& out, std::ost
           const auto value = parse_number(cell, &number_problem);
           const std::string why = value ? domain_problem(p, *value) : number_problem;
           if (!why.empty())
-            problem = where() + ", column '" + p.name + "': value '" + cell + "' " + why + " " + p.domain;
+            problem = where() + ", column '" + p.name + "': value '" + escape_control(cell.substr(0, 200)) + "' " + why +
+                      " " + p.domain;
           else
             v[i] = *value;
         }

@@ -11,12 +11,15 @@
 #include <ostream>
 
 #include "cli/commands.hpp"
+#include "cli/csv.hpp"
 #include "cli/job_source.hpp"
+#include "cli/output_lock.hpp"
 #include "cli/progress.hpp"
 #include "generators/checkpoint.hpp"
 #include "generators/content_key.hpp"
 #include "generators/row_runner.hpp"
 #include "generators/family.hpp"
+#include "generators/verify.hpp"
 
 namespace brdftab::cli {
 
@@ -46,6 +49,17 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
   }
   const auto src = load_jobs("generate", o.manifest, o.scene, o.only, err);
   if (!src) return 2;
+  // One writer per folder, from the up-to-date check to the scene index (output_lock.hpp).
+  OutputLock lock;
+  try {
+    lock = acquire_output_lock(o.out_dir, o.wait);
+  } catch (const OutputLockBusy& e) {
+    err << "brdftab generate: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    err << "brdftab generate: " << e.what() << "\n";
+    return 1;
+  }
   if (o.threads > 0) omp_set_num_threads(o.threads);
   StderrProgress progress(err, isatty(STDERR_FILENO) != 0, o.quiet);
   gen::GenerateContext ctx;
@@ -57,8 +71,17 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
   // The files to build (up-to-date ones are skipped), then each with progress n/N.
   std::vector<const decltype(src->jobs)::value_type*> todo;
   for (const auto& job : src->jobs) {
-    if (!o.rebuild && gen::table_file_status(o.out_dir / job.file, job.key, job.code_fingerprint).state ==
-                          gen::FileState::up_to_date)
+    bool up_to_date = !o.rebuild && gen::table_file_status(o.out_dir / job.file, job.key, job.code_fingerprint).state ==
+                                        gen::FileState::up_to_date;
+    if (up_to_date) {  // and its values right at a few random points (a digest anyone can recompute)
+      const auto v = gen::verify_file(o.out_dir / job.file, job.family, job.entry, gen::kQuickVerify);
+      if (!v.ok()) {
+        err << "brdftab generate: " << job.file << " fails re-measurement (" << escape_control(v.first_problem())
+            << "): rebuilding it\n";
+        up_to_date = false;
+      }
+    }
+    if (up_to_date)
       skipped.push_back(job.file);
     else
       todo.push_back(&job);

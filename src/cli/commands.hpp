@@ -24,6 +24,7 @@ struct GenerateOptions {
   bool quiet = false;
   bool rebuild = false;            // rebuild files whose content key matches too
   bool discard_checkpoint = false; // start afresh over a checkpoint of another content key
+  bool wait = false;               // wait for another run's lock on out_dir instead of exiting 2
 };
 int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err);
 // The table of what generate built (file, dataset, shape, size, errors, seconds).
@@ -76,11 +77,23 @@ int run_quantities(bool markdown, std::ostream& out);
 // `info --json`: every file and table as one JSON document (cmd_info_json.cpp).
 int run_info_json(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err);
 
+// `brdftab verify FILE...`: re-measures each table against the exact numerics (cmd_verify.cpp).
+struct VerifyOptions {
+  std::vector<std::filesystem::path> files;
+  std::size_t samples = 64;  // random off-grid points per table
+  double seconds = 10;       // per table at most
+  std::filesystem::path manifest, scene;  // where the files' entries are (besides the default manifest)
+};
+int run_verify(const VerifyOptions& o, std::ostream& out, std::ostream& err);
+// `brdftab seal FILE...`: re-seals (recomputes the digest of) files edited on purpose (cmd_seal.cpp).
+int run_seal(const std::vector<std::filesystem::path>& files, std::ostream& out, std::ostream& err);
+
 struct ExportOptions {
   std::filesystem::path file;
   std::string dataset;
   std::string format = "header";  // header | npy | glsl | exr
   std::filesystem::path out_dir = ".";
+  bool wait = false;  // wait for another run's lock on out_dir instead of exiting 2
 };
 // `export`: one table as a C++ header, .npy files, a GLSL snippet or an OpenEXR image (cmd_export.cpp).
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err);

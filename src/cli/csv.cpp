@@ -15,10 +15,10 @@ std::string_view trim(std::string_view s) {
 }
 }  // namespace
 
-std::vector<std::string> split_csv_line(std::string_view line) {
+std::vector<std::string> split_csv_line(std::string_view line, std::size_t max_cells) {
   std::vector<std::string> cells;
   std::size_t start = 0;
-  while (true) {
+  while (cells.size() < max_cells) {
     const std::size_t comma = line.find(',', start);
     cells.emplace_back(trim(line.substr(start, comma == std::string_view::npos ? line.npos : comma - start)));
     if (comma == std::string_view::npos) break;

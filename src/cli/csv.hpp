@@ -8,7 +8,9 @@
 
 namespace brdftab::cli {
 
-std::vector<std::string> split_csv_line(std::string_view line);
+// At most max_cells cells: the rest of the line is not split (a caller that expects n
+// cells passes n + 1 and sees a line with too many).
+std::vector<std::string> split_csv_line(std::string_view line, std::size_t max_cells = std::size_t(-1));
 // Text safe to print on a terminal: control characters (< 0x20, 0x7f) become \n, \t,
 // \r or \xNN, and a backslash becomes \\. Bytes >= 0x80 are kept (UTF-8).
 std::string escape_control(std::string_view s);

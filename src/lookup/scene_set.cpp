@@ -1,10 +1,10 @@
 #include "lookup/scene_set.hpp"
 
-#include <fstream>
 #include <optional>
 #include <regex>
 #include <sstream>
 
+#include "lookup/bounded_read.hpp"
 #include "lookup/filip_schema.hpp"
 #include "lookup/fresnel.hpp"
 #include "lookup/ghs_sigma_rel.hpp"
@@ -42,14 +42,16 @@ double parse_number(const std::filesystem::path& f, std::size_t line, const std:
 
 SceneSet::SceneSet(std::filesystem::path dir, OpenOptions options) : tables_(dir, options) {
   const auto path = dir / "scene.index";
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw TableFileError("scene folder '" + dir.string() + "': no readable scene.index (" + ec.message() + ")");
-  if (size > kMaxIndexBytes) throw TableFileError("scene index '" + path.string() + "' is larger than 64 MiB");
-  std::ifstream in(path);
   std::string text;
+  try {
+    text = read_regular_file(path, kMaxIndexBytes, "scene index");
+  } catch (const InputFileError& e) {
+    throw TableFileError("scene folder '" + dir.string() + "': " + e.what());
+  }
+  std::istringstream in(text);
   std::size_t n = 0;
   static const std::regex name_re("[A-Za-z0-9_.-]{1,64}"), word_re("[A-Za-z0-9_.-]{1,255}");
+  std::map<std::string, std::string> file_keys;
   Entry* cur = nullptr;
   for (std::string line; std::getline(in, line);) {
     ++n;
@@ -66,6 +68,9 @@ SceneSet::SceneSet(std::filesystem::path dir, OpenOptions options) : tables_(dir
     const std::string& k = w[0];
     if (k == "content_key" && w.size() == 2 && !cur) {
       key_ = w[1];
+    } else if (k == "file" && w.size() == 3 && !cur && entries_.empty()) {
+      // the content key of each table file the run that wrote this index wrote
+      if (!file_keys.emplace(w[1], w[2]).second) bad(path, n, "file '" + w[1] + "' appears twice");
     } else if (k == "material" && w.size() == 3 && !cur) {
       if (!std::regex_match(w[1], name_re)) bad(path, n, "material name '" + w[1] + "' is not [A-Za-z0-9_.-]{1,64}");
       if (entries_.count(w[1])) bad(path, n, "material '" + w[1] + "' appears twice");
@@ -85,6 +90,7 @@ SceneSet::SceneSet(std::filesystem::path dir, OpenOptions options) : tables_(dir
   if (n == 0) bad(path, 1, "empty file");
   if (cur) bad(path, n, "material '" + cur->name + "' has no 'end'");
   if (key_.empty()) bad(path, 2, "no content_key line");
+  tables_.expect_content_keys(std::move(file_keys));
 }
 
 SceneSet::~SceneSet() = default;

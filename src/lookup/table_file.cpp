@@ -106,8 +106,9 @@ std::vector<unsigned char> trusted_bytes(const std::filesystem::path& file, cons
   switch (verify_digest(bytes, &why)) {
     case DigestStatus::valid: return bytes;
     case DigestStatus::mismatch:
-      fail(file, "", "rejected before parsing: " + why + "; if you edited the file on purpose, re-seal it with `brdftab seal " +
-                         file.string() + "`");
+      fail(file, "", "rejected before parsing: " + why +
+                         "; if you edited it on purpose, re-seal it with `brdftab seal " + file.string() +
+                         "` (then `brdftab verify` re-measures its values)");
     case DigestStatus::malformed: fail(file, "", "rejected before parsing: " + why);
     case DigestStatus::absent: break;
   }
@@ -337,6 +338,29 @@ void check_storage(const OpenFile& f, const std::string& dataset, const std::str
   if (stored < need || stored > f.size())
     fail(f.path(), dataset, where + "declares " + std::to_string(need) + " bytes of values but stores " +
                                 std::to_string(stored) + " in a file of " + std::to_string(f.size()) + " bytes");
+  if (layout == H5D_CHUNKED) {
+    // Bounded by the content: each chunk costs libhdf5 index and cache memory whatever it
+    // holds, so a table of one-value chunks costs ~60x its values. At most
+    // kMaxChunksBase + values / kMinValuesPerChunk chunks.
+    hsize_t chunk[H5S_MAX_RANK] = {};
+    const int crank = H5Pget_chunk(dcpl, H5S_MAX_RANK, chunk);
+    Hid space(H5Dget_space(dset), H5Sclose);
+    hsize_t dims[H5S_MAX_RANK] = {};
+    const int rank = space.valid() ? H5Sget_simple_extent_dims(space, dims, nullptr) : -1;
+    if (crank < 1 || crank != rank) fail(f.path(), dataset, where + "has an unreadable chunk layout");
+    double chunks = 1;
+    for (int d = 0; d < rank; ++d) {
+      if (chunk[d] == 0) fail(f.path(), dataset, where + "has an unreadable chunk layout");
+      chunks *= std::ceil(static_cast<double>(dims[d]) / static_cast<double>(chunk[d]));
+    }
+    const double cap = static_cast<double>(kMaxChunksBase + n_values / kMinValuesPerChunk);
+    if (chunks > cap)
+      fail(f.path(), dataset, where + "is stored in " + std::to_string(static_cast<long long>(chunks)) +
+                                  " chunks, above the " + std::to_string(static_cast<long long>(cap)) +
+                                  " its " + std::to_string(n_values) + " values allow (at most " +
+                                  std::to_string(kMaxChunksBase) + " + values / " + std::to_string(kMinValuesPerChunk) +
+                                  "): refused");
+  }
   if (layout == H5D_CONTIGUOUS) {
     const haddr_t off = H5Dget_offset(dset);
     if (off == HADDR_UNDEF || off > f.size() || f.size() - off < need)

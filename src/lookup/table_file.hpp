@@ -58,6 +58,10 @@ inline constexpr long long kOldestSchemaVersion = 1;
 inline constexpr std::size_t kMaxTableFileBytes = std::size_t(256) << 20;  // 256 MiB
 inline constexpr std::size_t kMaxTableValues = std::size_t(1) << 24;       // 16,777,216 values
 inline constexpr std::size_t kMaxAttributeStringBytes = 16384;
+// Chunked storage: at most kMaxChunksBase + values / kMinValuesPerChunk chunks per dataset
+// (loading memory stays a small multiple of the values).
+inline constexpr std::size_t kMaxChunksBase = 64;
+inline constexpr std::size_t kMinValuesPerChunk = 256;
 
 class TableFileError : public std::runtime_error {
  public:

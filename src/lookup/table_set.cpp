@@ -1,6 +1,9 @@
 #include "lookup/table_set.hpp"
 
 #include <algorithm>
+#include <sstream>
+
+#include "lookup/bounded_read.hpp"
 
 namespace brdftab::lookup {
 
@@ -8,6 +11,31 @@ TableSet::TableSet(std::filesystem::path dir, OpenOptions options) : dir_(std::m
   std::error_code ec;
   if (!std::filesystem::is_directory(dir_, ec))
     throw TableFileError("table folder '" + dir_.string() + "' does not exist or is not a directory");
+  // A scene folder: the "file NAME KEY" lines at the head of scene.index (before the first
+  // material). Read with the index's cap; a folder without an index has no expectations.
+  const auto index = dir_ / "scene.index";
+  if (std::filesystem::exists(index, ec)) {
+    std::string text;
+    try {
+      text = read_regular_file(index, std::size_t(64) << 20, "scene index");
+    } catch (const InputFileError& e) {
+      throw TableFileError(std::string("table folder '") + dir_.string() + "': " + e.what());
+    }
+    std::istringstream in(text);
+    std::string line, line1;
+    std::getline(in, line1);
+    if (line1 == "brdftab-scene-index 1")
+      while (std::getline(in, line) && line.rfind("material ", 0) != 0) {
+        std::istringstream ls(line);
+        std::string word, file, key;
+        if (ls >> word >> file >> key && word == "file") expected_keys_[file] = key;
+      }
+  }
+}
+
+void TableSet::expect_content_keys(std::map<std::string, std::string> keys) {
+  std::lock_guard lock(mutex_);
+  expected_keys_ = std::move(keys);
 }
 
 const LoadedTable& TableSet::get(const std::string& file, const std::string& dataset) {
@@ -16,7 +44,21 @@ const LoadedTable& TableSet::get(const std::string& file, const std::string& dat
   auto it = loaded_.find(key);
   if (it != loaded_.end()) return *it->second;
   auto f = files_.find(file);
-  if (f == files_.end()) f = files_.emplace(file, VerifiedFile::open(dir_ / file, options_)).first;
+  if (f == files_.end()) {
+    VerifiedFile vf = VerifiedFile::open(dir_ / file, options_);
+    if (const auto e = expected_keys_.find(file); e != expected_keys_.end()) {
+      const auto attrs = vf.attributes();
+      const auto a = attrs.find("content_key");
+      const std::string* stored = a == attrs.end() ? nullptr : std::get_if<std::string>(&a->second);
+      if (!stored || *stored != e->second)
+        throw TableFileError("table file '" + (dir_ / file).string() + "' was not written by the run that wrote " +
+                             (dir_ / "scene.index").string() + " (its content key " +
+                             (stored ? stored->substr(0, 12) + "..." : std::string("(none)")) + ", the index expects " +
+                             e->second.substr(0, 12) + "...): the folder mixes two runs; run `brdftab generate` "
+                             "again into it");
+    }
+    f = files_.emplace(file, std::move(vf)).first;
+  }
   auto loaded = std::make_unique<LoadedTable>(f->second.load_table(dataset));
   if (!substitute_.empty() && substitute_ == dataset) substituted_ = true;  // NAME is the default table itself
   if (!substitute_.empty() && substitute_ != dataset) {

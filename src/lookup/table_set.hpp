@@ -3,7 +3,8 @@
 // for the tables it touches. get() is thread-safe; the returned reference stays valid for
 // the lifetime of the set, and queries on it need no locking. Files are verified as
 // load_table does (digest first; foreign files only with options.allow_foreign or
-// BRDFTAB_ALLOW_FOREIGN=1). Each file is read and its digest checked once; its bytes
+// BRDFTAB_ALLOW_FOREIGN=1). In a scene folder each file must carry the content key
+// scene.index lists for it (expect_content_keys). Each file is read and its digest checked once; its bytes
 // stay in memory for the lifetime of the set (tables are kilobytes to megabytes).
 #include <filesystem>
 #include <map>
@@ -35,6 +36,12 @@ class TableSet {
   bool substituted() const;
   std::string refusal() const;
   const OpenOptions& options() const { return options_; }
+  // The content key each file must carry (file name -> key). A folder written by
+  // `generate --scene` lists them in scene.index ("file NAME KEY" lines): the constructor
+  // reads them from there, SceneSet passes the ones it parsed. A file whose stored
+  // content_key differs was written by another run (a mixed folder): get() throws
+  // TableFileError naming it. Files not listed are not checked.
+  void expect_content_keys(std::map<std::string, std::string> keys);
 
  private:
   std::filesystem::path dir_;
@@ -42,6 +49,7 @@ class TableSet {
   mutable std::mutex mutex_;
   std::map<std::string, std::unique_ptr<LoadedTable>> loaded_;
   std::map<std::string, VerifiedFile> files_;  // each file read and verified once
+  std::map<std::string, std::string> expected_keys_;
   std::string substitute_;
   bool substituted_ = false;
   std::string refusal_;
