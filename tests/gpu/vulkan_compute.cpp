@@ -75,7 +75,8 @@ VulkanCompute::VulkanCompute() : impl_(new Impl) {
     VkInstanceCreateInfo ii{};
     ii.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
     ii.pApplicationInfo = &app;
-    check(vkCreateInstance(&ii, nullptr, &impl_->instance), "vkCreateInstance");
+    check(vkCreateInstance(&ii, nullptr, &impl_->instance),
+          "vkCreateInstance (no Vulkan driver? install mesa-vulkan-drivers and set VK_ICD_FILENAMES to lavapipe's lvp_icd json)");
     std::uint32_t n = 0;
     check(vkEnumeratePhysicalDevices(impl_->instance, &n, nullptr), "vkEnumeratePhysicalDevices");
     if (n == 0) throw std::runtime_error("no Vulkan device (is VK_ICD_FILENAMES set to lavapipe's lvp_icd json?)");
