@@ -67,7 +67,7 @@ struct ExportOptions {
   std::string format = "header";  // header | npy | glsl | exr
   std::filesystem::path out_dir = ".";
 };
-// `export`: one table as a C++ header, .npy files, a GLSL snippet or an OpenEXR image (cmd_export.cpp).
+// `export`: one table as a C++ header, .npy files, a GLSL lookup function or an OpenEXR image (cmd_export.cpp).
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err);
 
 struct ValidateOptions {
