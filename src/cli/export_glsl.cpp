@@ -81,7 +81,6 @@ class Translator {
     if (i_ != s_.size()) fail("unexpected '" + s_.substr(i_, 1) + "'");
     return e;
   }
-  bool uses_gamma = false;
 
  private:
   const std::string s_;
@@ -166,7 +165,6 @@ class Translator {
       const auto f = fns.find(name);
       if (f == fns.end()) fail("unknown function '" + name + "'");
       if (a.size() != f->second.second) fail(name + "() takes " + std::to_string(f->second.second) + " argument(s)");
-      if (name == "gamma") uses_gamma = true;
       std::string out = f->second.first + "(";
       for (std::size_t k = 0; k < a.size(); ++k) out += (k ? ", " : "") + a[k];
       return out + ")";
@@ -201,11 +199,12 @@ float brdftab_expm1(float x) {
   return um1 == -1.0 ? -1.0 : um1 * x / log(u);
 }
 // Gamma(x), x > 0: Lanczos (g = 5, 6 terms; Press et al., Numerical Recipes 2nd ed., Sec. 6.1,
-// Eq. 6.1.5) on [1, 2), moved there by Gamma(x + 1) = x Gamma(x).
+// Eq. 6.1.5) on [1, 2), moved there by Gamma(x + 1) = x Gamma(x); float32 overflows beyond
+// x ~ 35, so at most 40 steps each way (x > 41 is not reduced: +inf follows from exp).
 float brdftab_gamma(float x) {
   float f = 1.0;
-  while (x < 1.0) { f /= x; x += 1.0; }
-  while (x >= 2.0) { x -= 1.0; f *= x; }
+  for (int k = 0; k < 40 && x < 1.0; ++k) { f /= x; x += 1.0; }
+  for (int k = 0; k < 40 && x >= 2.0; ++k) { x -= 1.0; f *= x; }
   float y = x;
   float ser = 1.000000000190015;
   ser += 76.18009172947146 / (y + 1.0);
@@ -401,7 +400,6 @@ std::string glsl_text(const lookup::LoadedTable& lt, const std::string& source) 
       if (lo < hi) o << "  " << v << " = clamp(" << v << ", " << flt(lo) << ", " << flt(hi) << ");\n";
     }
   }
-  bool gamma = false;
   const std::string derived = lt.info.attribute_string("derived_axes");
   if (!derived.empty()) {
     for (const auto& assignment : split(derived, ';')) {
@@ -411,7 +409,6 @@ std::string glsl_text(const lookup::LoadedTable& lt, const std::string& source) 
       const auto lhs = split(assignment.substr(0, eq), ',')[0];
       Translator tr(assignment.substr(eq + 1), vars, lt.info, where + " (derived_axes)");
       const std::string rhs = tr.run();
-      gamma |= tr.uses_gamma;
       const std::string v = local_name(lhs);
       o << "  float " << v << " = " << rhs << ";\n";
       vars[lhs] = v;
@@ -432,9 +429,7 @@ std::string glsl_text(const lookup::LoadedTable& lt, const std::string& source) 
     vars["table"] = "table_value";
     Translator tr(value, vars, lt.info, where + " (value_formula)");
     o << "  return " << tr.run() << ";\n}\n";
-    gamma |= tr.uses_gamma;
   }
-  (void)gamma;
   return o.str();
 }
 
