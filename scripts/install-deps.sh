@@ -5,6 +5,7 @@ set -euo pipefail
 packages=(cmake g++ make git libeigen3-dev libboost-dev libboost-math-dev libhdf5-dev doctest-dev libcli11-dev
           nlohmann-json3-dev libbenchmark-dev gnuplot-nox pybind11-dev python3-dev python3-numpy python3-pytest
           python3-h5py python3-xarray python3-h5netcdf python3-netcdf4 netcdf-bin glslang-tools libopenexr-dev
+          libvulkan-dev mesa-vulkan-drivers
           pkg-config openmpi-bin libopenmpi-dev python3-venv python3-pip python3-setuptools python3-wheel)
 missing=()
 for p in "${packages[@]}"; do

@@ -119,11 +119,11 @@ int run_main(int argc, char** argv) {
   i->add_flag("--json", info_json, "one JSON document describing every file and table")->excludes("--markdown");
 
   ExportOptions ex;
-  auto* x = app.add_subcommand("export", "write one table as a C++ header, .npy files, a GLSL snippet or an OpenEXR image");
+  auto* x = app.add_subcommand("export", "write one table as a C++ header, .npy files, a GLSL lookup function or an OpenEXR image");
   x->add_option("file", ex.file, "table file (.h5)")->required();
   x->add_option("dataset", ex.dataset, "table name (`brdftab info FILE` lists them)")->required();
   x->add_option("--format", ex.format,
-                "header | npy | glsl | exr | pbrt-fourier (default: header; glsl, exr: 1-D/2-D tables; "
+                "header | npy | glsl | exr | pbrt-fourier (default: header; glsl: rank 1-3 tables; exr: 1-D/2-D tables; "
                 "pbrt-fourier: ls_brdf_modes_material_<name> only)")
       ->check(CLI::IsMember({"header", "npy", "glsl", "exr", "pbrt-fourier"}));
   x->add_option("--out", ex.out_dir, "output folder (default: .)");

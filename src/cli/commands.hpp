@@ -95,7 +95,7 @@ struct ExportOptions {
   std::filesystem::path out_dir = ".";
   bool wait = false;  // wait for another run's lock on out_dir instead of exiting 2
 };
-// `export`: one table as a C++ header, .npy files, a GLSL snippet or an OpenEXR image (cmd_export.cpp).
+// `export`: one table as a C++ header, .npy files, a GLSL lookup function or an OpenEXR image (cmd_export.cpp).
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err);
 
 struct ValidateOptions {

@@ -1,8 +1,9 @@
 """`brdftab export` outputs read back by independent readers: NumPy for .npy (values and
-axes equal the HDF5 file's, read with h5py), glslangValidator for the GLSL snippet (compiled
-in a fragment shader for every 1-D/2-D table)."""
+axes equal the HDF5 file's, read with h5py), glslangValidator for the GLSL lookup functions (compiled
+to SPIR-V in a compute shader for every table of rank 1 to 3)."""
 import glob
 import os
+import re
 import shutil
 import subprocess
 
@@ -48,27 +49,45 @@ def test_npy_holds_the_values_and_axes(tmp_path):
             assert len(files) == 1 + v.ndim
 
 
-def test_glsl_compiles_for_every_1d_2d_table(tmp_path):
+def test_glsl_compiles_for_every_table_of_rank_1_to_3(tmp_path):
+    """Every table of rank 1 to 3 exports a GLSL function that compiles to SPIR-V in a compute
+    shader (its results are compared with the CPU lookup on lavapipe by glsl_vulkan_lavapipe).
+    One shader per file, holding all its tables' functions (each buffer at its own binding)."""
     validator = shutil.which("glslangValidator")
     assert validator, "glslangValidator missing (Debian glslang-tools; scripts/install-deps.sh)"
     count = 0
-    for path, name in tables(max_rank=2):
-        export(path, name, "glsl", tmp_path)
-        snippet = (tmp_path / f"{ident(name)}.glsl").read_text()
-        with h5py.File(path, "r") as f:
-            rank = f[name][name].ndim
-        args = "p.x" if rank == 1 else "p.x, p.y"
-        shader = tmp_path / f"{ident(name)}.frag"
-        shader.write_text("#version 330 core\nuniform sampler2D tab;\nin vec2 p;\nout vec4 color;\n" + snippet +
-                          f"void main() {{ color = vec4({ident(name)}_lookup(tab, {args})); }}\n")
-        r = subprocess.run([validator, str(shader)], capture_output=True, text=True)
-        assert r.returncode == 0, r.stdout + r.stderr
-        count += 1
+    by_file = {}
+    for path, name in tables(max_rank=3):
+        by_file.setdefault(path, []).append(name)
+    for path, names in by_file.items():
+        source = "#version 450\nlayout(local_size_x = 1) in;\n"
+        calls = []
+        for k, name in enumerate(names):
+            files = export(path, name, "glsl", tmp_path)
+            assert [os.path.basename(f) for f in files] == [f"{ident(name)}.glsl", f"{ident(name)}.f32"]
+            snippet = (tmp_path / f"{ident(name)}.glsl").read_text()
+            with h5py.File(path, "r") as f:
+                v = f[name][name]
+                # The .f32 file: the values as float32, row-major.
+                np.testing.assert_array_equal(
+                    np.fromfile(tmp_path / f"{ident(name)}.f32", dtype="<f4").reshape(v.shape), v[()].astype(np.float32))
+            m = re.search(r"^float " + ident(name) + r"\(([^)]*)\) \{$", snippet, re.M)
+            assert m, f"{name}: no function {ident(name)}(...)"
+            nargs = len(m.group(1).split(","))
+            source += f"#define {ident(name)}_BINDING {k + 2}\n" + snippet
+            calls.append(f"{ident(name)}(" + ", ".join(f"x[{i}]" for i in range(nargs)) + ")")
+            count += 1
+        shader = tmp_path / "all.comp"
+        shader.write_text(source + "layout(std430, binding = 1) buffer IO { float x[4]; float y; };\n"
+                          "void main() {\n  y = 0.0;\n" + "".join(f"  y += {c};\n" for c in calls) + "}\n")
+        r = subprocess.run([validator, "-V", str(shader), "-o", str(tmp_path / "out.spv")], capture_output=True, text=True)
+        assert r.returncode == 0, path + ":\n" + r.stdout + r.stderr
     assert count >= 10
 
 
-def test_glsl_refuses_a_3d_table(tmp_path):
-    r = subprocess.run([EXE, "export", os.path.join(TABLE_DIR, "ghs_sigma_rel.h5"), "ghs_sigma_rel2_grid", "--format",
+def test_glsl_refuses_a_4d_table(tmp_path):
+    r = subprocess.run([EXE, "export", os.path.join(TABLE_DIR, "ls.h5"), "ls_brdf_modes", "--format",
                         "glsl", "--out", str(tmp_path)], capture_output=True, text=True)
     assert r.returncode == 2
-    assert "has rank 3; GLSL export covers 1-D and 2-D tables" in r.stderr
+    assert "table 'ls_brdf_modes' has rank 4; the GLSL export covers tables of rank 1 to 3" in r.stderr
+    assert not list(tmp_path.iterdir())
