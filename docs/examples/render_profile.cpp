@@ -18,8 +18,8 @@ int main() {
   const double e_avg = render::microfacet_albedo_eavg_corr(ggx, alpha);
   const double f_ms  = render::microfacet_albedo_kulla_conty_lobe(ggx, mu_o, mu_i, alpha);
   const std::size_t n = 4;
-  std::vector<double> mu(n), alpha(n), e(n);
-  for (std::size_t i = 0; i < n; ++i) mu[i] = 0.25 * static_cast<double>(i + 1), alpha[i] = 0.3;
-  render::microfacet_albedo_e_corr_batch(ggx, mu, alpha, e);   // size mismatch: std::invalid_argument
+  std::vector<double> mus(n), alphas(n), e(n);
+  for (std::size_t i = 0; i < n; ++i) mus[i] = 0.25 * static_cast<double>(i + 1), alphas[i] = alpha;
+  render::microfacet_albedo_e_corr_batch(ggx, mus, alphas, e);   // size mismatch: std::invalid_argument
   std::printf("E %.7f E_avg %.7f f_ms %.7f batch %.7f\n", e_o, e_avg, f_ms, e[1]);
 }
