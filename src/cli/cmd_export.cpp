@@ -17,8 +17,12 @@
 //   pbrt-fourier  DIR/DATASET.bsdf: a per-material Lambertian-sphere BRDF
 //           (ls_brdf_modes_material_<name> with its ls_brdf_corner_material_<name>) as a
 //           layer-laboratory Fourier BSDF for pbrt-v3 / Mitsuba 0.6 (cli/export_pbrt_fourier.hpp).
+//   rgl     DIR/DATASET.rgl.bsdf (or DIR/MODEL.rgl.bsdf with --model MODEL [--params ...], a
+//           model of the audit registry): an RGL tensor file (Dupuy & Jakob 2018) for pbrt-v4's
+//           `measured` material and Mitsuba 3's `measured` plugin (cli/export_rgl.hpp).
 // The numbers are written in shortest round-trip form (%.17g / %.9g), so they read back
 // as the same doubles / floats.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -35,8 +39,12 @@
 #include "cli/csv.hpp"
 #include "cli/export_exr.hpp"
 #include "cli/export_pbrt_fourier.hpp"
+#include "cli/export_rgl.hpp"
 #include "cli/foreign_isolation.hpp"
 #include "lookup/ls_schema.hpp"
+#include "numerics/brdf_audit.hpp"
+#include "numerics/domain_check.hpp"
+#include "lookup/number_format.hpp"
 #include "lookup/table_file.hpp"
 
 namespace brdftab::cli {
@@ -102,6 +110,7 @@ std::string c_string(const std::string& s) {
   return out + "\"";
 }
 
+// Every file `export` writes (but the OpenEXR image) goes through here.
 void write_file(const fs::path& p, const std::string& bytes) {
   std::ofstream f(p, std::ios::binary | std::ios::trunc);
   f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -224,10 +233,99 @@ std::string glsl_text(const lookup::LoadedTable& lt, const std::string& source) 
       << "_coord1(x1), " << n << "_coord0(x0))).r;\n}\n";
   return o.str();
 }
+
+// Creates the output folder, writes `bytes` to DIR/name and prints the path.
+void write_into(const fs::path& dir, const std::string& name, const std::vector<unsigned char>& bytes, std::ostream& out) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("cannot create the folder '" + dir.string() + "': " + ec.message());
+  const fs::path path = dir / name;
+  write_file(path, std::string(bytes.begin(), bytes.end()));
+  out << path.string() << "\n";
+}
+
+// `--format rgl --model NAME [--params NAME=VALUE,...]`: a model of the audit registry.
+int export_rgl_model(const ExportOptions& o, std::ostream& out, std::ostream& err) {
+  const numerics::AuditableModel* m = numerics::find_auditable_model(o.model);
+  if (!m) {
+    err << "brdftab export: --model: unknown model '" << escape_control(o.model) << "'; one of:";
+    for (const auto& x : numerics::auditable_models()) err << " " << x.name;
+    err << " (brdftab audit --list describes them)\n";
+    return 2;
+  }
+  std::vector<double> params = numerics::audit_default_params(*m);
+  std::string described = m->name;
+  for (const std::string& kv : o.params) {
+    const auto eq = kv.find('=');
+    const std::string name = kv.substr(0, eq);
+    std::size_t i = 0;
+    while (i < m->parameters.size() && m->parameters[i].name != name) ++i;
+    if (eq == std::string::npos || i == m->parameters.size()) {
+      err << "brdftab export: --params '" << escape_control(kv) << "': expected NAME=VALUE with NAME one of:";
+      for (const auto& p : m->parameters) err << " " << p.name;
+      err << "\n";
+      return 2;
+    }
+    const std::string text = kv.substr(eq + 1);
+    try {
+      std::size_t used = 0;
+      params[i] = std::stod(text, &used);
+      if (used != text.size()) throw std::invalid_argument("trailing characters");
+    } catch (const std::exception&) {
+      err << "brdftab export: --params " << name << ": '" << escape_control(text) << "' is not a number (domain "
+          << m->parameters[i].domain << ")\n";
+      return 2;
+    }
+  }
+  numerics::BoundBrdf f;
+  try {
+    for (std::size_t i = 0; i < params.size(); ++i) {
+      const numerics::AuditParameter& p = m->parameters[i];
+      const double v = params[i];
+      if (!((p.lo_open ? v > p.lo : v >= p.lo) && (p.hi_open ? v < p.hi : v <= p.hi)))
+        numerics::throw_domain_error(p.name, v, p.domain);
+    }
+    f = m->bind(params);
+  } catch (const std::exception& e) {
+    err << "brdftab export: --model " << m->name << ": " << escape_control(e.what()) << "\n";
+    return 2;
+  }
+  for (std::size_t i = 0; i < params.size(); ++i)
+    described += (i ? ", " : " (") + m->parameters[i].name + " = " + lookup::format_number(params[i]) +
+                 (i + 1 == params.size() ? ")" : "");
+  try {
+    RglOptions ro;
+    ro.description = described + ": " + m->description + "; written by brdftab export --format rgl";
+    write_into(o.out_dir, identifier(m->name) + ".rgl.bsdf", rgl_tensor_bsdf(f, ro), out);
+  } catch (const std::exception& e) {
+    err << "brdftab export: " << escape_control(e.what()) << "\n";
+    return 1;
+  }
+  return 0;
+}
 }  // namespace
 
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
   install_foreign_file_isolation();
+  if (!o.model.empty()) {
+    if (o.format != "rgl") {
+      err << "brdftab export: --model needs --format rgl (the other formats export a table: FILE DATASET)\n";
+      return 2;
+    }
+    if (!o.file.empty()) {
+      err << "brdftab export: --model replaces FILE DATASET; give one or the other\n";
+      return 2;
+    }
+    return export_rgl_model(o, out, err);
+  }
+  if (!o.params.empty()) {
+    err << "brdftab export: --params needs --model\n";
+    return 2;
+  }
+  if (o.file.empty() || o.dataset.empty()) {
+    err << "brdftab export: FILE and DATASET are required (or --format rgl --model NAME)\n";
+    return 2;
+  }
   lookup::LoadedTable lt;
   try {
     lt = lookup::load_table(o.file, o.dataset);
@@ -236,11 +334,12 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
     return 1;
   }
   const auto& t = lt.table;
-  if (o.format == "pbrt-fourier") {
+  if (o.format == "pbrt-fourier" || o.format == "rgl") {
     namespace sc = schema::ls;
     if (!sc::kBrdfModesMaterial.matches(o.dataset)) {
-      err << "brdftab export: --format pbrt-fourier: table '" << escape_control(o.dataset)
-          << "' is not a per-material Lambertian-sphere BRDF table (" << sc::kBrdfModesMaterial.name << "<name>)\n";
+      err << "brdftab export: --format " << o.format << ": table '" << escape_control(o.dataset)
+          << "' is not a per-material Lambertian-sphere BRDF table (" << sc::kBrdfModesMaterial.name << "<name>)"
+          << (o.format == "rgl" ? "; for a model use --model NAME" : "") << "\n";
       return 2;
     }
     try {
@@ -248,13 +347,20 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
       const lookup::LoadedTable corner = lookup::load_table(o.file, std::string(sc::kBrdfCornerMaterial.name) + name);
       const double c = lt.info.attribute_number("ls_c", NAN);
       const lookup::LsBrdfMaterial mat(t, corner.table, c);
-      std::error_code ec;
-      fs::create_directories(o.out_dir, ec);
-      if (ec) throw std::runtime_error("cannot create the folder '" + o.out_dir.string() + "': " + ec.message());
-      const fs::path path = o.out_dir / (identifier(t.name()) + ".bsdf");
-      const std::vector<unsigned char> bytes = pbrt_fourier_bsdf(mat);
-      write_file(path, std::string(bytes.begin(), bytes.end()));
-      out << path.string() << "\n";
+      if (o.format == "pbrt-fourier") {
+        write_into(o.out_dir, identifier(t.name()) + ".bsdf", pbrt_fourier_bsdf(mat), out);
+      } else {
+        // f(omega_i, omega_o) with phi the azimuth between the two outgoing directions
+        const RglBrdf f = [&mat](const numerics::AuditVec& wi, const numerics::AuditVec& wo) {
+          const double si = std::hypot(wi.x, wi.y), so = std::hypot(wo.x, wo.y);
+          const double cphi = si > 0 && so > 0 ? std::clamp((wi.x * wo.x + wi.y * wo.y) / (si * so), -1.0, 1.0) : 1.0;
+          return mat.eval(std::clamp(wi.z, 0x1p-1000, 1.0), std::clamp(wo.z, 0x1p-1000, 1.0), std::acos(cphi)).f;
+        };
+        RglOptions ro;
+        ro.description = "Lambertian-sphere BRDF (d'Eon), table " + t.name() + " of " + o.file.filename().string() +
+                         ", c = " + lookup::format_number(c) + "; written by brdftab export --format rgl";
+        write_into(o.out_dir, identifier(t.name()) + ".rgl.bsdf", rgl_tensor_bsdf(f, ro), out);
+      }
     } catch (const std::exception& e) {
       err << "brdftab export: " << escape_control(e.what()) << "\n";
       return 1;

@@ -64,8 +64,10 @@ int run_info_json(const std::vector<std::filesystem::path>& files, std::ostream&
 struct ExportOptions {
   std::filesystem::path file;
   std::string dataset;
-  std::string format = "header";  // header | npy | glsl | exr
+  std::string format = "header";  // header | npy | glsl | exr | pbrt-fourier | rgl
   std::filesystem::path out_dir = ".";
+  std::string model;                // --format rgl: a model of the audit registry instead of FILE DATASET
+  std::vector<std::string> params;  // NAME=VALUE overrides of the model's defaults
 };
 // `export`: one table as a C++ header, .npy files, a GLSL snippet or an OpenEXR image (cmd_export.cpp).
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err);
