@@ -204,9 +204,11 @@ TEST_CASE("ls pbrt-fourier export: an independent SCATFUN reader reproduces the 
   } hi, lo;
   for (int q = 0; q < 3000; ++q) {
     double mi = draw(0.01), mo = draw(0.01);
-    const bool below = q % 4 == 3;  // one cosine in (0, 0.01): uniform or log-uniform from 1e-6
-    if (below) (q % 8 == 3 ? mi : mo) = u01() < 0.5 ? 0.01 * u01() + 1e-9 : 1e-6 * std::pow(1e4, u01());
-    if (below && q % 16 == 15) mi = 1e-6 * std::pow(1e4, u01());  // both below 0.01
+    // a cosine in [1e-5, 0.01) (ten times the table's smallest mu_max, 1e-6; next to it the
+    // spline leans on the mu = 0 node): uniform or log-uniform
+    const bool below = q % 4 == 3;
+    if (below) (q % 8 == 3 ? mi : mo) = u01() < 0.5 ? 1e-5 + (0.01 - 1e-5) * u01() : 1e-5 * std::pow(1e3, u01());
+    if (below && q % 16 == 15) mi = 1e-5 * std::pow(1e3, u01());  // both below 0.01
     // phi uniform, or within 0.05 of back-scatter (0) or forward scatter (pi)
     const double v = u01(), phi = q % 3 == 0 ? std::numbers::pi * v : q % 3 == 1 ? 0.05 * v : std::numbers::pi - 0.05 * v;
     const double ref = f_exact(mi, mo, phi);

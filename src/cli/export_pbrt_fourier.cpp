@@ -48,7 +48,7 @@ void integrate_catmull_rom(int n, const double* x, const double* values, double*
 
 }  // namespace
 
-std::vector<double> pbrt_fourier_mu_nodes(int half_nodes) {
+std::vector<double> pbrt_fourier_mu_nodes(int half_nodes, double mu_min) {
   if (half_nodes < 2 || half_nodes > 4096)
     throw std::invalid_argument("pbrt-fourier: half_nodes = " + std::to_string(half_nodes) + " is not in 2..4096");
   // Positive nodes mu(x) = x^3 / (x^3 + (1 - x)^4), x = j / half_nodes: graded towards mu = 0
@@ -63,6 +63,19 @@ std::vector<double> pbrt_fourier_mu_nodes(int half_nodes) {
     const double m = static_cast<double>(static_cast<float>(j == half_nodes ? 1.0 : a / (a + b)));
     if (m > 0 && (pos.empty() || m > pos.back())) pos.push_back(m);
   }
+  // Towards 0 the corner mu_i / (mu_i + mu_o) is scale-free: its Catmull-Rom error depends on
+  // the ratio of neighbouring nodes only (<= 1.25: ~2e-4 along one axis). Below the first graded
+  // node whose ratio to the next is <= 1.25, the nodes are geometric with ratio 1.25 down to
+  // mu_min (the smallest mu the source tables hold).
+  constexpr double kRatio = 1.25;
+  if (!(mu_min > 0 && mu_min < 0.01))
+    throw std::invalid_argument("pbrt-fourier: mu_min = " + std::to_string(mu_min) + " is not in (0, 0.01)");
+  std::size_t first = 0;
+  while (first + 1 < pos.size() && pos[first + 1] / pos[first] > kRatio) ++first;
+  std::vector<double> geo;
+  for (double m = pos[first] / kRatio; m >= mu_min * (1 - 1e-9); m /= kRatio) geo.push_back(static_cast<double>(static_cast<float>(m)));
+  pos.erase(pos.begin(), pos.begin() + std::ptrdiff_t(first));
+  pos.insert(pos.begin(), geo.rbegin(), geo.rend());
   // mu = 0 four times: pbrt's Catmull-Rom weights take their end slopes from the neighbours
   // in the node list, so the two inner zeros give the grazing reflection entries (mu_O = +0)
   // a one-sided slope towards mu > 0, and the two outer ones keep the transmission side at 0.
@@ -78,7 +91,7 @@ std::vector<unsigned char> pbrt_fourier_bsdf(const lookup::LsBrdfMaterial& mat, 
     throw std::invalid_argument("pbrt-fourier: max_order = " + std::to_string(o.max_order) + " is not in 1..4096");
   if (!(o.tolerance > 0 && o.tolerance < 1))
     throw std::invalid_argument("pbrt-fourier: tolerance must be in (0, 1)");
-  const std::vector<double> mu = pbrt_fourier_mu_nodes(o.half_nodes);
+  const std::vector<double> mu = pbrt_fourier_mu_nodes(o.half_nodes, mat.mu_lo());
   const int n = static_cast<int>(mu.size());
   const int H = (n - 4) / 2;  // mu[H + 2], mu[H + 3]: the inner zeros (grazing reflection, mu_O = 0)
   // Azimuths of the trapezoid rule: kPhi points per period, coefficients through one real FFT.

@@ -7,7 +7,8 @@
 //     nParameterValues = 0, float eta = 1, float alpha[2] = 0, 2 unused floats;
 //   float mu[nMu] (ascending over [-1, 1]); float cdf[nMu * nMu]; int32 (offset, length)
 //     [nMu * nMu]; float coefficients[nCoeffs].
-// The mu nodes (pbrt_fourier_mu_nodes) are graded towards mu = 0 and mu = 1 and hold mu = 0
+// The mu nodes (pbrt_fourier_mu_nodes) are graded towards mu = 0 (geometric, ratio 1.25, down
+// to the table's smallest mu_max, 1e-6 by default) and mu = 1 and hold mu = 0
 // four times (two per side), so grazing entries (mu_O = 0: |mu_I| f stays finite) are
 // stored and pbrt's Catmull-Rom weights see one-sided slopes there.
 // Entry (o, i) (flat index o * nMu + i) holds the cosine series of |mu_I| f in pbrt's
@@ -31,13 +32,14 @@
 namespace brdftab::cli {
 
 struct PbrtFourierOptions {
-  int half_nodes = 192;     // positive mu nodes x^3 / (x^3 + (1 - x)^4), x = j / half_nodes, mirrored
+  int half_nodes = 192;     // graded mu nodes x^3 / (x^3 + (1 - x)^4), x = j / half_nodes, below them
+                            // geometric ones (ratio 1.25) down to the table's mu_lo; mirrored
   double tolerance = 1e-7;  // series truncation, relative to min over phi of f_ss (see above)
   int max_order = 512;
 };
 
-// The node list (ascending, float32 values): -pos reversed, 0, 0, 0, 0, pos.
-std::vector<double> pbrt_fourier_mu_nodes(int half_nodes);
+// The node list (ascending, float32 values): -pos reversed, 0, 0, 0, 0, pos; pos >= mu_min.
+std::vector<double> pbrt_fourier_mu_nodes(int half_nodes, double mu_min);
 
 std::vector<unsigned char> pbrt_fourier_bsdf(const lookup::LsBrdfMaterial& material, const PbrtFourierOptions& o = {});
 

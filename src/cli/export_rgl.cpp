@@ -152,7 +152,7 @@ std::vector<unsigned char> tensor_file(const std::vector<TensorField>& fields) {
   for (const auto& f : fields) header += 2 + f.name.size() + 2 + 1 + 8 + 8 * f.shape.size();
   std::vector<unsigned char> b;
   const char magic[12] = {'t', 'e', 'n', 's', 'o', 'r', '_', 'f', 'i', 'l', 'e', '\0'};
-  b.insert(b.end(), magic, magic + 12);
+  for (char ch : magic) b.push_back(static_cast<unsigned char>(ch));
   b.push_back(1), b.push_back(0);  // version 1.0
   put_le(b, fields.size(), 4);
   std::uint64_t offset = (header + 7) / 8 * 8;
