@@ -119,14 +119,17 @@ int run_main(int argc, char** argv) {
   i->add_flag("--json", info_json, "one JSON document describing every file and table")->excludes("--markdown");
 
   ExportOptions ex;
-  auto* x = app.add_subcommand("export", "write one table as a C++ header, .npy files, a GLSL lookup function or an OpenEXR image");
-  x->add_option("file", ex.file, "table file (.h5)")->required();
-  x->add_option("dataset", ex.dataset, "table name (`brdftab info FILE` lists them)")->required();
+  auto* x = app.add_subcommand("export", "write one table as a C++ header, .npy files, a GLSL lookup function, an OpenEXR image, a pbrt Fourier BSDF or an RGL tensor");
+  x->add_option("file", ex.file, "table file (.h5); not with --model");
+  x->add_option("dataset", ex.dataset, "table name (`brdftab info FILE` lists them)");
   x->add_option("--format", ex.format,
-                "header | npy | glsl | exr | pbrt-fourier (default: header; glsl: rank 1-3 tables; exr: 1-D/2-D tables; "
-                "pbrt-fourier: ls_brdf_modes_material_<name> only)")
-      ->check(CLI::IsMember({"header", "npy", "glsl", "exr", "pbrt-fourier"}));
+                "header | npy | glsl | exr | pbrt-fourier | rgl (default: header; glsl: rank 1-3 tables; exr: 1-D/2-D "
+                "tables; pbrt-fourier: ls_brdf_modes_material_<name> only; rgl: ls_brdf_modes_material_<name> or --model)")
+      ->check(CLI::IsMember({"header", "npy", "glsl", "exr", "pbrt-fourier", "rgl"}));
   x->add_option("--out", ex.out_dir, "output folder (default: .)");
+  x->add_option("--model", ex.model, "--format rgl: a BRDF model (`brdftab audit --list`) instead of FILE DATASET");
+  x->add_option("--params", ex.params, "with --model: NAME=VALUE,... overrides of the model's default parameters")
+      ->delimiter(',');
   x->add_flag("--wait", ex.wait, "if another run is writing into the output folder, wait for it (default: exit 2)");
 
   VerifyOptions vf;

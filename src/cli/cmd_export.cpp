@@ -14,8 +14,12 @@
 //   pbrt-fourier  DIR/DATASET.bsdf: a per-material Lambertian-sphere BRDF
 //           (ls_brdf_modes_material_<name> with its ls_brdf_corner_material_<name>) as a
 //           layer-laboratory Fourier BSDF for pbrt-v3 / Mitsuba 0.6 (cli/export_pbrt_fourier.hpp).
+//   rgl     DIR/DATASET.rgl.bsdf (or DIR/MODEL.rgl.bsdf with --model MODEL [--params ...], a
+//           model of the audit registry): an RGL tensor file (Dupuy & Jakob 2018) for pbrt-v4's
+//           `measured` material and Mitsuba 3's `measured` plugin (cli/export_rgl.hpp).
 // The numbers are written in shortest round-trip form (%.17g / %.9g), so they read back
 // as the same doubles / floats.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -33,9 +37,13 @@
 #include "cli/export_exr.hpp"
 #include "cli/export_glsl.hpp"
 #include "cli/export_pbrt_fourier.hpp"
+#include "cli/export_rgl.hpp"
 #include "cli/foreign_isolation.hpp"
 #include "cli/output_lock.hpp"
 #include "lookup/ls_schema.hpp"
+#include "numerics/brdf_audit.hpp"
+#include "numerics/domain_check.hpp"
+#include "lookup/number_format.hpp"
 #include "lookup/table_file.hpp"
 #include "tablewrite/atomic_write.hpp"
 
@@ -209,6 +217,25 @@ std::string name_collision(const fs::path& file, const lookup::Table& t) {
 
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
   install_foreign_file_isolation();
+  if (!o.model.empty()) {
+    if (o.format != "rgl") {
+      err << "brdftab export: --model needs --format rgl (the other formats export a table: FILE DATASET)\n";
+      return 2;
+    }
+    if (!o.file.empty()) {
+      err << "brdftab export: --model replaces FILE DATASET; give one or the other\n";
+      return 2;
+    }
+    return export_rgl_model(o, out, err);
+  }
+  if (!o.params.empty()) {
+    err << "brdftab export: --params needs --model\n";
+    return 2;
+  }
+  if (o.file.empty() || o.dataset.empty()) {
+    err << "brdftab export: FILE and DATASET are required (or --format rgl --model NAME)\n";
+    return 2;
+  }
   lookup::LoadedTable lt;
   try {
     lt = lookup::load_table(o.file, o.dataset);
@@ -237,11 +264,12 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
     err << "brdftab export: " << escape_control(e.what()) << "\n";
     return 1;
   }
-  if (o.format == "pbrt-fourier") {
+  if (o.format == "pbrt-fourier" || o.format == "rgl") {
     namespace sc = schema::ls;
     if (!sc::kBrdfModesMaterial.matches(o.dataset)) {
-      err << "brdftab export: --format pbrt-fourier: table '" << escape_control(o.dataset)
-          << "' is not a per-material Lambertian-sphere BRDF table (" << sc::kBrdfModesMaterial.name << "<name>)\n";
+      err << "brdftab export: --format " << o.format << ": table '" << escape_control(o.dataset)
+          << "' is not a per-material Lambertian-sphere BRDF table (" << sc::kBrdfModesMaterial.name << "<name>)"
+          << (o.format == "rgl" ? "; for a model use --model NAME" : "") << "\n";
       return 2;
     }
     try {
@@ -249,13 +277,20 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
       const lookup::LoadedTable corner = lookup::load_table(o.file, std::string(sc::kBrdfCornerMaterial.name) + name);
       const double c = lt.info.attribute_number("ls_c", NAN);
       const lookup::LsBrdfMaterial mat(t, corner.table, c);
-      std::error_code ec;
-      fs::create_directories(o.out_dir, ec);
-      if (ec) throw std::runtime_error("cannot create the folder '" + o.out_dir.string() + "': " + ec.message());
-      const fs::path path = o.out_dir / (identifier(t.name()) + ".bsdf");
-      const std::vector<unsigned char> bytes = pbrt_fourier_bsdf(mat);
-      write_file(path, std::string(bytes.begin(), bytes.end()));
-      out << path.string() << "\n";
+      if (o.format == "pbrt-fourier") {
+        write_into(o.out_dir, identifier(t.name()) + ".bsdf", pbrt_fourier_bsdf(mat), out);
+      } else {
+        // f(omega_i, omega_o) with phi the azimuth between the two outgoing directions
+        const RglBrdf f = [&mat](const numerics::AuditVec& wi, const numerics::AuditVec& wo) {
+          const double si = std::hypot(wi.x, wi.y), so = std::hypot(wo.x, wo.y);
+          const double cphi = si > 0 && so > 0 ? std::clamp((wi.x * wo.x + wi.y * wo.y) / (si * so), -1.0, 1.0) : 1.0;
+          return mat.eval(std::clamp(wi.z, 0x1p-1000, 1.0), std::clamp(wo.z, 0x1p-1000, 1.0), std::acos(cphi)).f;
+        };
+        RglOptions ro;
+        ro.description = "Lambertian-sphere BRDF (d'Eon), table " + t.name() + " of " + o.file.filename().string() +
+                         ", c = " + lookup::format_number(c) + "; written by brdftab export --format rgl";
+        write_into(o.out_dir, identifier(t.name()) + ".rgl.bsdf", rgl_tensor_bsdf(f, ro), out);
+      }
     } catch (const std::exception& e) {
       err << "brdftab export: " << escape_control(e.what()) << "\n";
       return 1;

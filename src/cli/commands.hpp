@@ -91,9 +91,11 @@ int run_seal(const std::vector<std::filesystem::path>& files, std::ostream& out,
 struct ExportOptions {
   std::filesystem::path file;
   std::string dataset;
-  std::string format = "header";  // header | npy | glsl | exr
+  std::string format = "header";  // header | npy | glsl | exr | pbrt-fourier | rgl
   std::filesystem::path out_dir = ".";
   bool wait = false;  // wait for another run's lock on out_dir instead of exiting 2
+  std::string model;                // --format rgl: a model of the audit registry instead of FILE DATASET
+  std::vector<std::string> params;  // NAME=VALUE overrides of the model's defaults
 };
 // `export`: one table as a C++ header, .npy files, a GLSL lookup function or an OpenEXR image (cmd_export.cpp).
 int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err);

@@ -158,6 +158,8 @@ class LsBrdfMaterial {
   }
   double c() const { return c_; }
   int modes() const { return main_.modes(); }
+  // The smallest mu_max the tables hold (below it they are read at mu_lo).
+  double mu_lo() const { return corner_.mu_lo(); }
   // The cosine-series coefficients of f_multiple in phi: out[m] = (2 - delta_m0)
   // (s_i s_o)^m F_m(mu_i, mu_o) for m < modes() (f_multiple = sum_m out[m] cos(m phi)).
   void multiple_cosine_coefficients(double mu_i, double mu_o, double* out) const {
