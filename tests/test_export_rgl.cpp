@@ -495,7 +495,7 @@ TEST_CASE("export --format rgl: a per-material Lambertian-sphere table through t
   const fs::path d = testing::scratch_dir("export_rgl_ls");
   gen::GenerateContext ctx;
   ctx.out_dir = d;
-  gen::write_built_tables("ls.h5", gen::ls::build_brdf_material("probe", c, 0.5, {}, {1, 8}, ctx), ctx);
+  gen::write_built_tables("ls.h5", brdftab::schema::ls::kDatasets, gen::ls::build_brdf_material("probe", c, 0.5, {}, {1, 8}, ctx), ctx);
   const auto r = testing::run_cli("export '" + (d / "ls.h5").string() +
                                   "' ls_brdf_modes_material_probe --format rgl --out '" + d.string() + "'");
   REQUIRE_MESSAGE(r.status == 0, r.err);

@@ -33,7 +33,7 @@ lookup::TableSet& render_set() {
     fs::create_directories(d);
     gen::GenerateContext ctx;
     ctx.out_dir = d;
-    gen::write_built_tables(std::string(sc::kFile),
+    gen::write_built_tables(std::string(sc::kFile), sc::kDatasets,
                             gen::microfacet_albedo::build_render_from_file(fs::path(BRDFTAB_SOURCE_DIR) / "tables", ctx), ctx);
     return d;
   }();
@@ -177,7 +177,7 @@ TEST_CASE("render profile: load-time checks name the problem") {
   std::vector<gen::BuiltTable> only_ggx;
   for (auto& b : gen::microfacet_albedo::build_render_from_file(fs::path(BRDFTAB_SOURCE_DIR) / "tables", ctx))
     if (b.dataset.table.name().find("beckmann") == std::string::npos) only_ggx.push_back(std::move(b));
-  gen::write_built_tables(std::string(sc::kFile), std::move(only_ggx), ctx);
+  gen::write_built_tables(std::string(sc::kFile), sc::kDatasets, std::move(only_ggx), ctx);
   lookup::TableSet ts(empty);
   CHECK_NOTHROW(render::microfacet_albedo_load(ts, "ggx"));
   CHECK_THROWS_WITH(render::microfacet_albedo_load(ts, "beckmann"), doctest::Contains("microfacet_albedo_beckmann_E_corr_render"));

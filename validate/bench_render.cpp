@@ -51,7 +51,7 @@ std::shared_ptr<lookup::TableSet> render_table_set(const std::filesystem::path& 
   std::filesystem::create_directories(scratch);
   gen::GenerateContext ctx;
   ctx.out_dir = scratch;
-  gen::write_built_tables(std::string(sc::kFile), gen::microfacet_albedo::build_render_from_file(dir, ctx), ctx);
+  gen::write_built_tables(std::string(sc::kFile), sc::kDatasets, gen::microfacet_albedo::build_render_from_file(dir, ctx), ctx);
   auto out = std::make_shared<lookup::TableSet>(scratch);
   // Loads every render table now (the TableSet reads lazily), then the folder can go.
   for (const char* ndf : {"ggx", "beckmann"}) lookup::render::microfacet_albedo_load(*out, ndf);

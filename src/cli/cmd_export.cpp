@@ -196,6 +196,76 @@ std::string npy(const std::vector<double>& v, const std::vector<int>& shape, boo
   return out;
 }
 
+
+// Creates the output folder, writes `bytes` to DIR/name and prints the path.
+void write_into(const fs::path& dir, const std::string& name, const std::vector<unsigned char>& bytes, std::ostream& out) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("cannot create the folder '" + dir.string() + "': " + ec.message());
+  const fs::path path = dir / name;
+  write_file(path, std::string(bytes.begin(), bytes.end()));
+  out << path.string() << "\n";
+}
+
+// `--format rgl --model NAME [--params NAME=VALUE,...]`: a model of the audit registry.
+int export_rgl_model(const ExportOptions& o, std::ostream& out, std::ostream& err) {
+  const numerics::AuditableModel* m = numerics::find_auditable_model(o.model);
+  if (!m) {
+    err << "brdftab export: --model: unknown model '" << escape_control(o.model) << "'; one of:";
+    for (const auto& x : numerics::auditable_models()) err << " " << x.name;
+    err << " (brdftab audit --list describes them)\n";
+    return 2;
+  }
+  std::vector<double> params = numerics::audit_default_params(*m);
+  std::string described = m->name;
+  for (const std::string& kv : o.params) {
+    const auto eq = kv.find('=');
+    const std::string name = kv.substr(0, eq);
+    std::size_t i = 0;
+    while (i < m->parameters.size() && m->parameters[i].name != name) ++i;
+    if (eq == std::string::npos || i == m->parameters.size()) {
+      err << "brdftab export: --params '" << escape_control(kv) << "': expected NAME=VALUE with NAME one of:";
+      for (const auto& p : m->parameters) err << " " << p.name;
+      err << "\n";
+      return 2;
+    }
+    const std::string text = kv.substr(eq + 1);
+    try {
+      std::size_t used = 0;
+      params[i] = std::stod(text, &used);
+      if (used != text.size()) throw std::invalid_argument("trailing characters");
+    } catch (const std::exception&) {
+      err << "brdftab export: --params " << name << ": '" << escape_control(text) << "' is not a number (domain "
+          << m->parameters[i].domain << ")\n";
+      return 2;
+    }
+  }
+  numerics::BoundBrdf f;
+  try {
+    for (std::size_t i = 0; i < params.size(); ++i) {
+      const numerics::AuditParameter& p = m->parameters[i];
+      const double v = params[i];
+      if (!((p.lo_open ? v > p.lo : v >= p.lo) && (p.hi_open ? v < p.hi : v <= p.hi)))
+        numerics::throw_domain_error(p.name, v, p.domain);
+    }
+    f = m->bind(params);
+  } catch (const std::exception& e) {
+    err << "brdftab export: --model " << m->name << ": " << escape_control(e.what()) << "\n";
+    return 2;
+  }
+  for (std::size_t i = 0; i < params.size(); ++i)
+    described += (i ? ", " : " (") + m->parameters[i].name + " = " + lookup::format_number(params[i]) +
+                 (i + 1 == params.size() ? ")" : "");
+  try {
+    RglOptions ro;
+    ro.description = described + ": " + m->description + "; written by brdftab export --format rgl";
+    write_into(o.out_dir, identifier(m->name) + ".rgl.bsdf", rgl_tensor_bsdf(f, ro), out);
+  } catch (const std::exception& e) {
+    err << "brdftab export: " << escape_control(e.what()) << "\n";
+    return 1;
+  }
+  return 0;
+}
 }  // namespace
 
 // Names that the sanitizing (identifier) maps onto one another would overwrite each
