@@ -27,6 +27,7 @@
 
 #include "cli_runner.hpp"
 #include "generators/ls_brdf.hpp"
+#include "lookup/ls_schema.hpp"
 #include "generators/table_builder.hpp"
 #include "numerics/ls_half_space.hpp"
 
