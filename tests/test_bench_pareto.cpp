@@ -91,8 +91,8 @@ TEST_CASE("pareto files: CSV rows with the front marked, a gnuplot script render
   // installs); each row's label is placed apart from the others.
   REQUIRE(fs::exists(dir / "pareto_demo.png"));
   CHECK(fs::file_size(dir / "pareto_demo.png") > 1000);
-  CHECK(s.str().find("set label \"16x16\"") != std::string::npos);
-  CHECK(s.str().find("set label \"big, slow\"") != std::string::npos);
+  CHECK(s.str().find("set label '16x16'") != std::string::npos);
+  CHECK(s.str().find("set label 'big, slow'") != std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -60,6 +60,13 @@ TEST_CASE("every method of every registered quantity is reachable from eval") {
       CAPTURE(row);
       const auto r = run_cli("eval " + q.name + " --method " + method + " --tables '" + tables + "'", header + "\n" + row + "\n");
       ++runs;
+      // h_iso's "fit" is reachable and answers with its documented refusal (d'Eon gives no
+      // fit for the isotropic H-function): exit 2 naming why, not an unknown method.
+      if (q.name == "h_iso" && method == "fit") {
+        CHECK(r.status == 2);
+        CHECK(r.err.find("no fit exists") != std::string::npos);
+        continue;
+      }
       CHECK_MESSAGE(r.status == 0, r.err);
       std::istringstream out(r.out);
       std::string head, line;
