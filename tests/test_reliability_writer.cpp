@@ -129,7 +129,7 @@ TEST_CASE("generate: a full or read-only disk (tmpfs) ends with a message, exit 
   ::umount(dir.c_str());
   CHECK(r.status == 1);
   CHECK(has(r.err, "No space left on device"));
-  CHECK(left == 0);
+  CHECK(left <= 2);  // no table file: at most the writer lock and the rows checkpoint (kept for a resume)
 
   REQUIRE(mount_tmpfs(dir, "size=1m"));
   ::mount(nullptr, dir.c_str(), nullptr, MS_REMOUNT | MS_RDONLY, nullptr);
