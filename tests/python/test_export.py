@@ -90,4 +90,4 @@ def test_glsl_refuses_a_4d_table(tmp_path):
                         "glsl", "--out", str(tmp_path)], capture_output=True, text=True)
     assert r.returncode == 2
     assert "table 'ls_brdf_modes' has rank 4; the GLSL export covers tables of rank 1 to 3" in r.stderr
-    assert not list(tmp_path.iterdir())
+    assert [p.name for p in tmp_path.iterdir()] in ([], [".brdftab.lock"])  # no export, at most the writer lock

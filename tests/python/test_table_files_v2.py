@@ -219,7 +219,7 @@ def test_derived_axes_reproduced_from_the_file_alone():
             mu[:3] = [0.0, 1e-9, 1.0]
             mine = t.from_inputs(alpha=alpha, mu=mu)
             tt = np.sqrt(np.sqrt(mu * (1 + c * alpha) / (mu + c * alpha)))
-            ref = brdftab.Table(path, name)(alpha, tt, clamp=True)
+            ref = brdftab.Table(path, name)(alpha, tt, errors="clamp")
             assert inputs == ["alpha", "mu"]
         elif name.startswith(("microfacet_albedo_ggx_", "microfacet_albedo_beckmann_")):
             # GGX / Beckmann albedo on (alpha, s(mu; alpha)), s sheared along the grazing
