@@ -16,6 +16,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <unistd.h>
@@ -149,17 +150,27 @@ void register_render_benchmarks(const BenchContext& ctx) {
   for (int k = 0; k < 2; ++k) {
     const std::string ndf = k == 0 ? "ggx" : "beckmann";
     auto t = render[k];
-    for (int q = 0; q < 2; ++q) {
+    // q as a compile-time constant: the calls are direct and inline, as in a renderer's loop
+    // (a function pointer chosen at run time would add an indirect call the baselines do not pay).
+    const auto register_e = [&](auto q_constant) {
+      constexpr int q = decltype(q_constant)::value;
       const std::string qn = q == 0 ? "E_corr" : "E_sep";
-      const auto f = q == 0 ? &lookup::render::microfacet_albedo_e_corr : &lookup::render::microfacet_albedo_e_sep;
-      const auto fb = q == 0 ? &lookup::render::microfacet_albedo_e_corr_batch : &lookup::render::microfacet_albedo_e_sep_batch;
+      const auto f = [](const lookup::render::MicrofacetAlbedo& tt, double mu, double alpha) {
+        return q == 0 ? lookup::render::microfacet_albedo_e_corr(tt, mu, alpha) : lookup::render::microfacet_albedo_e_sep(tt, mu, alpha);
+      };
       const double err = max_err(ref[k][q], [&](std::size_t i) { return f(*t, pts->mu[i], pts->alpha[i]); });
       const double bytes = static_cast<double>(t->e[q].bytes());
       scalar_bench("render/" + ndf + "_" + qn + "/scalar", pts,
                    [t, f](const Points& p, std::size_t i) { return f(*t, p.mu[i], p.alpha[i]); }, err, bytes);
       batch_bench("render/" + ndf + "_" + qn + "/batch", pts,
-                  [t, fb](const Points& p, std::vector<double>& out) { fb(*t, p.mu, p.alpha, out); }, err, bytes);
-    }
+                  [t](const Points& p, std::vector<double>& out) {
+                    if constexpr (q == 0) lookup::render::microfacet_albedo_e_corr_batch(*t, p.mu, p.alpha, out);
+                    else lookup::render::microfacet_albedo_e_sep_batch(*t, p.mu, p.alpha, out);
+                  },
+                  err, bytes);
+    };
+    register_e(std::integral_constant<int, 0>{});
+    register_e(std::integral_constant<int, 1>{});
     // E_avg (1-D): against the precise E_avg table.
     {
       const lookup::MicrofacetAlbedoTables& pk = *precise[k];
@@ -211,18 +222,18 @@ void register_render_benchmarks(const BenchContext& ctx) {
   {
     auto t = render[0];
     scalar_bench("render/floor/coordinates_only", pts,
-                 [t](const Points& p, std::size_t i) {
-                   const double a = std::min(std::max(t->alpha_lo, p.alpha[i]), t->alpha_hi);
-                   const double mu = std::min(std::max(0.0, p.mu[i]), 1.0), ca = t->t_scale * a;
-                   return std::sqrt(std::sqrt(a)) + std::sqrt(std::sqrt(mu * (1.0 + ca) / (mu + ca)));
+                 [t](const Points& p, std::size_t i) {  // the render lookup's own maps (float)
+                   namespace d = lookup::render::detail;
+                   const float a = d::clamp_alpha(*t, static_cast<float>(p.alpha[i]));
+                   return d::alpha_grid(t->e[0], a) + d::t_grid(*t, static_cast<float>(p.mu[i]), a);
                  },
                  0.0, 0.0);
     scalar_bench("render/floor/bicubic_read_only", pts,
                  [t](const Points& p, std::size_t i) {
                    // grid coordinates from the inputs by one multiply each (no map)
                    const auto& g = t->e[0];
-                   return lookup::render::detail::read(g, lookup::render::detail::stencil(p.alpha[i] * (g.n0 - 1), g.n0),
-                                                       lookup::render::detail::stencil(p.mu[i] * (g.n1 - 1), g.n1));
+                   return lookup::render::detail::read(g, lookup::render::detail::stencil(static_cast<float>(p.alpha[i] * (g.n0 - 1)), g.n0),
+                                                       lookup::render::detail::stencil(static_cast<float>(p.mu[i] * (g.n1 - 1)), g.n1));
                  },
                  0.0, static_cast<double>(t->e[0].bytes()));
   }

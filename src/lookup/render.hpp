@@ -14,11 +14,25 @@
 // error of these functions (tests/test_lookup_render.cpp checks both against the exact
 // numerics, domain edges included).
 //
+// Float evaluation. The lookups evaluate in IEEE binary32: the coordinate maps (square roots
+// and one division, a third of the cost of double ones on x86-64) and the 16-node weighted
+// sum of a 2-D read (SSE where the target has it, else the same sum in scalar float; a 1-D
+// read weights and sums in double). The stored values are
+// float32 already. What float adds to the table's own error (rounded coordinates and weights)
+// is measured once, when the tables are loaded: the largest difference from the double
+// evaluation of the same interpolant (lookup::Table's cubic read) at 16384 fixed points
+// uniform in the grid coordinates plus the domain's corners and edges, doubled, is
+// float_evaluation_error[q]; a lookup's stated error is lookup_error(q) = max_abs_error[q] +
+// float_evaluation_error[q]. Measured: E 3e-7 .. 5e-7, E_avg ~2e-7
+// (tests/test_lookup_render.cpp checks the bound at 10^5 other points). Scalar 2.2x faster than the double evaluation
+// (docs/speed.md).
+//
 // Inputs outside the domain are clamped to it (mu to [0, 1], alpha to the table's range);
 // NaN reads as the lower edge. There is no error policy: check inputs before the loop if a
 // caller needs one (the precise profile, lookup/microfacet_albedo.hpp, has OutOfDomain::error).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstddef>
 #include <span>
 #include <stdexcept>
@@ -32,9 +46,14 @@
 #include "lookup/table_file.hpp"
 #include "lookup/table_set.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace brdftab::lookup::render {
 
-// A float32 grid, regular in its coordinate u, read with 4-point Lagrange interpolation.
+// A float32 grid, regular in its coordinate u, read with 4-point Lagrange interpolation; a
+// 2-D grid's coordinate constants also in float (its lookups' arithmetic).
 struct CubicGrid1 {
   std::vector<float> v;
   int n = 0;
@@ -45,38 +64,76 @@ struct CubicGrid2 {
   std::vector<float> v;  // row-major, the last axis fastest
   int n0 = 0, n1 = 0;
   double u0_0 = 0, inv_du0 = 0, u0_1 = 0, inv_du1 = 0;
+  float u0_0f = 0, inv_du0f = 0, u0_1f = 0, inv_du1f = 0;
   std::size_t bytes() const { return v.size() * sizeof(float); }
 };
 
 namespace detail {
-// First node i of the 4-point stencil and the Lagrange weights at grid coordinate g (clamped
-// to [0, n - 1]; NaN to 0): lookup::Table's cubic rule, i = clamp(floor(g) - 1, 0, n - 4).
+// First node i of the 4-point stencil and the position t = g - i in it (in [0, 3]) at grid
+// coordinate g (clamped to [0, n - 1]; NaN to 0): lookup::Table's cubic rule,
+// i = clamp(floor(g) - 1, 0, n - 4).
 struct Stencil {
   int i;
-  double w[4];
+  float t;
 };
-inline Stencil stencil(double g, int n) {
-  g = std::min(std::max(0.0, g), static_cast<double>(n - 1));
-  Stencil s;
-  s.i = std::min(std::max(static_cast<int>(g) - 1, 0), n - 4);
-  const double t = g - s.i, t1 = t - 1, t2 = t - 2, t3 = t - 3;
-  // Lagrange basis on the nodes 0, 1, 2, 3 at t.
-  s.w[0] = -(t1 * t2 * t3) * (1.0 / 6);
-  s.w[1] = (t * t2 * t3) * 0.5;
-  s.w[2] = -(t * t1 * t3) * 0.5;
-  s.w[3] = (t * t1 * t2) * (1.0 / 6);
-  return s;
+inline Stencil stencil(float g, int n) {
+  g = std::min(std::max(0.0f, g), static_cast<float>(n - 1));
+  const int i = std::min(std::max(static_cast<int>(g) - 1, 0), n - 4);
+  return {i, g - static_cast<float>(i)};
 }
-inline double read(const CubicGrid1& g, const Stencil& s) {
-  const float* p = g.v.data() + s.i;
-  return s.w[0] * p[0] + s.w[1] * p[1] + s.w[2] * p[2] + s.w[3] * p[3];
+#if defined(__SSE2__)
+// The Lagrange basis on the nodes 0, 1, 2, 3 at t, lane k = prod_{m != k} (t - m) / (k - m),
+// formed in a register (weights stored to memory and reloaded as a vector would stall on
+// store forwarding).
+inline __m128 lagrange_weights(float t) {
+  const __m128 d = _mm_sub_ps(_mm_set1_ps(t), _mm_set_ps(3, 2, 1, 0));  // lanes t, t-1, t-2, t-3
+  const __m128 d1 = _mm_shuffle_ps(d, d, _MM_SHUFFLE(0, 3, 2, 1));
+  const __m128 d2 = _mm_shuffle_ps(d, d, _MM_SHUFFLE(1, 0, 3, 2));
+  const __m128 d3 = _mm_shuffle_ps(d, d, _MM_SHUFFLE(2, 1, 0, 3));
+  return _mm_mul_ps(_mm_mul_ps(_mm_mul_ps(d1, d2), d3), _mm_set_ps(1.0f / 6, -0.5f, 0.5f, -1.0f / 6));
 }
-inline double read(const CubicGrid2& g, const Stencil& s0, const Stencil& s1) {
+#else
+inline void lagrange_weights(float t, float w[4]) {
+  const float t1 = t - 1, t2 = t - 2, t3 = t - 3;
+  w[0] = -(t1 * t2 * t3) * (1.0f / 6);
+  w[1] = (t * t2 * t3) * 0.5f;
+  w[2] = -(t * t1 * t3) * 0.5f;
+  w[3] = (t * t1 * t2) * (1.0f / 6);
+}
+#endif
+inline float read(const CubicGrid2& g, const Stencil& s0, const Stencil& s1) {
   const float* row = g.v.data() + static_cast<std::size_t>(s0.i) * static_cast<std::size_t>(g.n1) + s1.i;
-  double acc = 0;
-  for (int a = 0; a < 4; ++a, row += g.n1)
-    acc += s0.w[a] * (s1.w[0] * row[0] + s1.w[1] * row[1] + s1.w[2] * row[2] + s1.w[3] * row[3]);
-  return acc;
+  const std::size_t n1 = static_cast<std::size_t>(g.n1);
+#if defined(__SSE2__)
+  // The four rows as vectors: sum_a w0[a] row_a, then the dot product with w1.
+  const __m128 w0 = lagrange_weights(s0.t), w1 = lagrange_weights(s1.t);
+  __m128 acc = _mm_mul_ps(_mm_shuffle_ps(w0, w0, 0x00), _mm_loadu_ps(row));
+  acc = _mm_add_ps(acc, _mm_mul_ps(_mm_shuffle_ps(w0, w0, 0x55), _mm_loadu_ps(row + n1)));
+  acc = _mm_add_ps(acc, _mm_mul_ps(_mm_shuffle_ps(w0, w0, 0xaa), _mm_loadu_ps(row + 2 * n1)));
+  acc = _mm_add_ps(acc, _mm_mul_ps(_mm_shuffle_ps(w0, w0, 0xff), _mm_loadu_ps(row + 3 * n1)));
+  acc = _mm_mul_ps(acc, w1);
+  acc = _mm_add_ps(acc, _mm_movehl_ps(acc, acc));
+  acc = _mm_add_ss(acc, _mm_shuffle_ps(acc, acc, 0x55));
+  return _mm_cvtss_f32(acc);
+#else
+  float w0[4], w1[4], c[4];
+  lagrange_weights(s0.t, w0);
+  lagrange_weights(s1.t, w1);
+  for (int b = 0; b < 4; ++b)
+    c[b] = w0[0] * row[b] + w0[1] * row[n1 + b] + w0[2] * row[2 * n1 + b] + w0[3] * row[3 * n1 + b];
+  return (c[0] * w1[0] + c[2] * w1[2]) + (c[1] * w1[1] + c[3] * w1[3]);
+#endif
+}
+// A 1-D read at grid coordinate g (formed from a float root, see alpha_grid), weights and sum in
+// double: four products, no cost to speak of.
+inline double read(const CubicGrid1& grid, double g) {
+  const int n = grid.n;
+  g = std::min(std::max(0.0, g), static_cast<double>(n - 1));
+  const int i = std::min(std::max(static_cast<int>(g) - 1, 0), n - 4);
+  const double t = g - i, t1 = t - 1, t2 = t - 2, t3 = t - 3;
+  const float* p = grid.v.data() + i;
+  return -(t1 * t2 * t3) * (1.0 / 6) * p[0] + (t * t2 * t3) * 0.5 * p[1] - (t * t1 * t3) * 0.5 * p[2] +
+         (t * t1 * t2) * (1.0 / 6) * p[3];
 }
 }  // namespace detail
 
@@ -88,7 +145,13 @@ struct MicrofacetAlbedo {
   CubicGrid1 eavg[2];  // Eavg_corr, Eavg_sep on alpha^(1/4)
   double t_scale = 0;  // c of t(mu; alpha) = (mu (1 + c alpha) / (mu + c alpha))^(1/4)
   double alpha_lo = 0, alpha_hi = 0;  // the E tables' alpha range (the E_avg tables cover it)
-  double max_abs_error[4] = {};       // stated by the generator: E_corr, E_sep, Eavg_corr, Eavg_sep
+  float t_scalef = 0, alpha_lof = 0, alpha_hif = 0;  // the same in float (the lookups' arithmetic)
+  // Errors, by quantity E_corr, E_sep, Eavg_corr, Eavg_sep: the table's, stated by the
+  // generator (attribute max_abs_error; NaN from microfacet_albedo_from), and the float
+  // evaluation's, measured at load (see the top of this file).
+  double max_abs_error[4] = {NAN, NAN, NAN, NAN};
+  double float_evaluation_error[4] = {};
+  double lookup_error(int q) const { return max_abs_error[q] + float_evaluation_error[q]; }
   std::size_t bytes() const { return e[0].bytes() + e[1].bytes() + eavg[0].bytes() + eavg[1].bytes(); }
 };
 
@@ -118,6 +181,8 @@ inline CubicGrid2 render_grid2(const Table& t) {
   g.n0 = t.axis(0).n, g.n1 = t.axis(1).n;
   g.u0_0 = t.axis(0).u0, g.inv_du0 = t.axis(0).inv_du;
   g.u0_1 = t.axis(1).u0, g.inv_du1 = t.axis(1).inv_du;
+  g.u0_0f = static_cast<float>(g.u0_0), g.inv_du0f = static_cast<float>(g.inv_du0);
+  g.u0_1f = static_cast<float>(g.u0_1), g.inv_du1f = static_cast<float>(g.inv_du1);
   g.v.resize(static_cast<std::size_t>(g.n0) * static_cast<std::size_t>(g.n1));
   for (int i = 0; i < g.n0; ++i)
     for (int j = 0; j < g.n1; ++j) {
@@ -129,10 +194,68 @@ inline CubicGrid2 render_grid2(const Table& t) {
 }
 }  // namespace detail
 
+namespace detail {
+// The alpha stencil of an E table (u = alpha^(1/4)) and the t stencil of mu at that alpha, in
+// float (see the top of this file).
+inline float clamp_alpha(const MicrofacetAlbedo& t, float alpha) { return std::min(std::max(t.alpha_lof, alpha), t.alpha_hif); }
+inline float alpha_grid(const CubicGrid2& g, float alpha_clamped) { return (std::sqrt(std::sqrt(alpha_clamped)) - g.u0_0f) * g.inv_du0f; }
+inline double alpha_grid(const CubicGrid1& g, float alpha_clamped) {
+  return (static_cast<double>(std::sqrt(std::sqrt(alpha_clamped))) - g.u0) * g.inv_du;
+}
+// t(mu; alpha) (schema::microfacet_albedo::t_of_mu) as a grid coordinate.
+inline float t_grid(const MicrofacetAlbedo& t, float mu, float alpha_clamped) {
+  mu = std::min(std::max(0.0f, mu), 1.0f);
+  const float ca = t.t_scalef * alpha_clamped;
+  return (std::sqrt(std::sqrt(mu * (1.0f + ca) / (mu + ca))) - t.e[0].u0_1f) * t.e[0].inv_du1f;
+}
+inline float microfacet_albedo_e(const MicrofacetAlbedo& t, int q, float mu, float alpha) {
+  const float a = clamp_alpha(t, alpha);
+  const CubicGrid2& g = t.e[q];
+  return read(g, stencil(alpha_grid(g, a), g.n0), stencil(t_grid(t, mu, a), g.n1));
+}
+inline double microfacet_albedo_eavg(const MicrofacetAlbedo& t, int q, float alpha) {
+  return read(t.eavg[q], alpha_grid(t.eavg[q], clamp_alpha(t, alpha)));
+}
+
+// The float evaluation's error, measured at load (top of this file): the largest
+// |float lookup - Table::eval| over 16384 points uniform in the grid coordinates (a fixed
+// 64-bit LCG, the same points at every load) and the corners and edges of the domain
+// (mu = 0, 1e-6, 1, alpha at both ends), doubled.
+inline void measure_float_evaluation_error(MicrofacetAlbedo& out, const Table* tabs[4]) {
+  namespace sc = schema::microfacet_albedo;
+  std::uint64_t state = 0x9e3779b97f4a7c15ull;
+  const auto uniform = [&state] {  // Knuth's MMIX LCG, the top 53 bits
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  const double x_lo = std::sqrt(std::sqrt(out.alpha_lo)), x_hi = std::sqrt(std::sqrt(out.alpha_hi));
+  std::vector<double> alphas, mus;
+  for (double a : {out.alpha_lo, out.alpha_hi, std::sqrt(out.alpha_lo * out.alpha_hi)})
+    for (double m : {0.0, 1e-6, 1e-3, 0.5, 1.0}) alphas.push_back(a), mus.push_back(m);
+  for (int i = 0; i < 16384; ++i) {
+    const double x = x_lo + (x_hi - x_lo) * uniform(), a = std::min(std::max(x * x * x * x, out.alpha_lo), out.alpha_hi);
+    alphas.push_back(a), mus.push_back(sc::mu_of_t(out.t_scale, uniform(), a));
+  }
+  for (int q = 0; q < 4; ++q) {
+    double worst = 0;
+    for (std::size_t i = 0; i < alphas.size(); ++i) {
+      const float af = static_cast<float>(alphas[i]), mf = static_cast<float>(mus[i]);
+      const double a = static_cast<double>(clamp_alpha(out, af)), m = static_cast<double>(std::min(std::max(0.0f, mf), 1.0f));
+      const double exact = q < 2 ? tabs[q]->eval2(a, sc::t_of_mu(out.t_scale, m, a)) : tabs[q]->eval1(a);
+      const double got = q < 2 ? microfacet_albedo_e(out, q, mf, af) : microfacet_albedo_eavg(out, q - 2, af);
+      worst = std::max(worst, std::abs(got - exact));
+    }
+    out.float_evaluation_error[q] = 2 * worst;
+  }
+}
+}  // namespace detail
+
 // The render tables of one NDF from four tables (E_corr, E_sep, Eavg_corr, Eavg_sep, any
 // source) and the constant c of t(mu; alpha), checked once: ndf 0 ggx, 1 beckmann (schema:
 // axes, transforms, units), float32 cubic, t on [0, 1], c > 0, the same alpha range in both E
 // tables, the E_avg tables covering it. Throws std::invalid_argument naming the table.
+// Measures the float evaluation's error (float_evaluation_error; ~5 ms); max_abs_error is
+// left NaN (microfacet_albedo_load reads it from the files).
 inline MicrofacetAlbedo microfacet_albedo_from(int ndf, const Table& e_corr, const Table& e_sep, const Table& eavg_corr,
                                                const Table& eavg_sep, double t_scale) {
   namespace sc = schema::microfacet_albedo;
@@ -140,6 +263,7 @@ inline MicrofacetAlbedo microfacet_albedo_from(int ndf, const Table& e_corr, con
   const Table* tabs[4] = {&e_corr, &e_sep, &eavg_corr, &eavg_sep};
   if (!(t_scale > 0 && std::isfinite(t_scale))) detail::bad_render_table(e_corr, "mu_t_scale missing or not > 0");
   out.t_scale = t_scale;
+  out.t_scalef = static_cast<float>(t_scale);
   for (int q = 0; q < 4; ++q) {
     const Table& t = *tabs[q];
     schema::check_table(t, sc::render_dataset(ndf, q));
@@ -151,6 +275,7 @@ inline MicrofacetAlbedo microfacet_albedo_from(int ndf, const Table& e_corr, con
       if (q == 1 && (a.x_lo != out.alpha_lo || a.x_hi != out.alpha_hi))
         detail::bad_render_table(t, "its alpha range differs from the E_corr table's");
       out.alpha_lo = a.x_lo, out.alpha_hi = a.x_hi;
+      out.alpha_lof = static_cast<float>(a.x_lo), out.alpha_hif = static_cast<float>(a.x_hi);
       out.e[q] = detail::render_grid2(t);
     } else {
       if (!(a.x_lo <= out.alpha_lo && a.x_hi >= out.alpha_hi))
@@ -160,6 +285,7 @@ inline MicrofacetAlbedo microfacet_albedo_from(int ndf, const Table& e_corr, con
       out.eavg[q - 2] = detail::render_grid1(t);
     }
   }
+  detail::measure_float_evaluation_error(out, tabs);
   return out;
 }
 
@@ -180,40 +306,21 @@ inline MicrofacetAlbedo microfacet_albedo_load(TableSet& ts, std::string_view nd
   return out;
 }
 
-namespace detail {
-// The alpha stencil of an E table (u = alpha^(1/4)) and the t stencil of mu at that alpha.
-inline double clamp_alpha(const MicrofacetAlbedo& t, double alpha) { return std::min(std::max(t.alpha_lo, alpha), t.alpha_hi); }
-inline Stencil t_stencil(const MicrofacetAlbedo& t, double mu, double alpha_clamped) {
-  mu = std::min(std::max(0.0, mu), 1.0);
-  const double ca = t.t_scale * alpha_clamped;
-  const double u = std::sqrt(std::sqrt(mu * (1.0 + ca) / (mu + ca)));  // t(mu; alpha), schema t_of_mu
-  return stencil((u - t.e[0].u0_1) * t.e[0].inv_du1, t.e[0].n1);
-}
-inline double microfacet_albedo_e(const MicrofacetAlbedo& t, int q, double mu, double alpha) {
-  const double a = clamp_alpha(t, alpha);
-  const double x = std::sqrt(std::sqrt(a));
-  return read(t.e[q], stencil((x - t.e[q].u0_0) * t.e[q].inv_du0, t.e[q].n0), t_stencil(t, mu, a));
-}
-inline double microfacet_albedo_eavg(const MicrofacetAlbedo& t, int q, double alpha) {
-  const double x = std::sqrt(std::sqrt(clamp_alpha(t, alpha)));
-  return read(t.eavg[q], stencil((x - t.eavg[q].u0) * t.eavg[q].inv_du, t.eavg[q].n));
-}
-}  // namespace detail
-
 // E_corr(mu, alpha), E_sep(mu, alpha): directional albedo with F = 1 (height-correlated and
-// separable masking-shadowing; numerics::microfacet_albedo).
+// separable masking-shadowing; numerics::microfacet_albedo). Error: lookup_error(0), (1).
 inline double microfacet_albedo_e_corr(const MicrofacetAlbedo& t, double mu, double alpha) {
-  return detail::microfacet_albedo_e(t, 0, mu, alpha);
+  return detail::microfacet_albedo_e(t, 0, static_cast<float>(mu), static_cast<float>(alpha));
 }
 inline double microfacet_albedo_e_sep(const MicrofacetAlbedo& t, double mu, double alpha) {
-  return detail::microfacet_albedo_e(t, 1, mu, alpha);
+  return detail::microfacet_albedo_e(t, 1, static_cast<float>(mu), static_cast<float>(alpha));
 }
-// E_avg(alpha) = 2 Integral_0^1 E(mu) mu dmu (numerics::microfacet_albedo_avg).
+// E_avg(alpha) = 2 Integral_0^1 E(mu) mu dmu (numerics::microfacet_albedo_avg). Error:
+// lookup_error(2), (3).
 inline double microfacet_albedo_eavg_corr(const MicrofacetAlbedo& t, double alpha) {
-  return detail::microfacet_albedo_eavg(t, 0, alpha);
+  return detail::microfacet_albedo_eavg(t, 0, static_cast<float>(alpha));
 }
 inline double microfacet_albedo_eavg_sep(const MicrofacetAlbedo& t, double alpha) {
-  return detail::microfacet_albedo_eavg(t, 1, alpha);
+  return detail::microfacet_albedo_eavg(t, 1, static_cast<float>(alpha));
 }
 
 // Kulla & Conty 2017 (energy compensation), the multiple-scattering lobe with F = 1 from
@@ -222,19 +329,18 @@ inline double microfacet_albedo_eavg_sep(const MicrofacetAlbedo& t, double alpha
 // (schema::microfacet_albedo::kulla_conty_lobe_formula, shared with numerics::kulla_conty_lobe).
 // The alpha coordinate and its stencil are formed once for the three reads.
 inline double microfacet_albedo_kulla_conty_lobe(const MicrofacetAlbedo& t, double mu_o, double mu_i, double alpha) {
-  const double a = detail::clamp_alpha(t, alpha);
-  const double x = std::sqrt(std::sqrt(a));
-  const detail::Stencil sa = detail::stencil((x - t.e[0].u0_0) * t.e[0].inv_du0, t.e[0].n0);
-  const double e_o = detail::read(t.e[0], sa, detail::t_stencil(t, mu_o, a));
-  const double e_i = detail::read(t.e[0], sa, detail::t_stencil(t, mu_i, a));
-  const double e_avg = detail::read(t.eavg[0], detail::stencil((x - t.eavg[0].u0) * t.eavg[0].inv_du, t.eavg[0].n));
+  const float a = detail::clamp_alpha(t, static_cast<float>(alpha));
+  const detail::Stencil sa = detail::stencil(detail::alpha_grid(t.e[0], a), t.e[0].n0);
+  const float e_o = detail::read(t.e[0], sa, detail::stencil(detail::t_grid(t, static_cast<float>(mu_o), a), t.e[0].n1));
+  const float e_i = detail::read(t.e[0], sa, detail::stencil(detail::t_grid(t, static_cast<float>(mu_i), a), t.e[0].n1));
+  const double e_avg = detail::read(t.eavg[0], detail::alpha_grid(t.eavg[0], a));
   return schema::microfacet_albedo::kulla_conty_lobe_formula(e_o, e_i, e_avg);
 }
 
 // Batched forms: out[i] = the scalar form at (mu[i], alpha[i]), bit for bit (the same inline
-// code; tests/test_lookup_render.cpp). The coordinates of a chunk are formed first (a loop of
-// square roots and divisions the compiler vectorizes), then read. Sizes are checked once per
-// call (std::invalid_argument); no allocation.
+// code; tests/test_lookup_render.cpp). The grid coordinates of a chunk are formed first (a
+// loop of float square roots and divisions the compiler vectorizes), then read. Sizes are
+// checked once per call (std::invalid_argument); no allocation.
 namespace detail {
 inline void check_render_batch(const char* what, std::size_t a, std::size_t b) {
   if (a != b)
@@ -247,15 +353,33 @@ inline void microfacet_albedo_e_batch(const MicrofacetAlbedo& t, int q, std::spa
   check_render_batch(what, alpha.size(), out.size());
   const CubicGrid2& g = t.e[q];
   constexpr std::size_t kChunk = 64;
-  double ga[kChunk], gt[kChunk];
+  float ga[kChunk], gt[kChunk];
   for (std::size_t start = 0; start < out.size(); start += kChunk) {
     const std::size_t m = std::min(kChunk, out.size() - start);
-    for (std::size_t j = 0; j < m; ++j) {
-      const double a = std::min(std::max(t.alpha_lo, alpha[start + j]), t.alpha_hi);
-      const double u = std::min(std::max(0.0, mu[start + j]), 1.0);
-      const double ca = t.t_scale * a;
-      ga[j] = (std::sqrt(std::sqrt(a)) - g.u0_0) * g.inv_du0;
-      gt[j] = (std::sqrt(std::sqrt(u * (1.0 + ca) / (u + ca))) - g.u0_1) * g.inv_du1;
+    std::size_t j = 0;
+#if defined(__SSE2__)
+    // Four points per step: the scalar form's operations in the same order, lane by lane (IEEE
+    // square root, division and the min/max operand order that sends NaN to the lower edge).
+    const __m128 lo = _mm_set1_ps(t.alpha_lof), hi = _mm_set1_ps(t.alpha_hif), zero = _mm_setzero_ps(),
+                 one = _mm_set1_ps(1.0f), c = _mm_set1_ps(t.t_scalef);
+    for (; j + 4 <= m; j += 4) {
+      const double* pa = alpha.data() + start + j;
+      const double* pm = mu.data() + start + j;
+      const __m128 av = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(pa)), _mm_cvtpd_ps(_mm_loadu_pd(pa + 2)));
+      const __m128 mv = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(pm)), _mm_cvtpd_ps(_mm_loadu_pd(pm + 2)));
+      const __m128 a = _mm_min_ps(_mm_max_ps(av, lo), hi);
+      const __m128 u = _mm_min_ps(_mm_max_ps(mv, zero), one);
+      const __m128 ca = _mm_mul_ps(c, a);
+      const __m128 r = _mm_div_ps(_mm_mul_ps(u, _mm_add_ps(one, ca)), _mm_add_ps(u, ca));
+      _mm_storeu_ps(ga + j, _mm_mul_ps(_mm_sub_ps(_mm_sqrt_ps(_mm_sqrt_ps(a)), _mm_set1_ps(g.u0_0f)), _mm_set1_ps(g.inv_du0f)));
+      _mm_storeu_ps(gt + j, _mm_mul_ps(_mm_sub_ps(_mm_sqrt_ps(_mm_sqrt_ps(r)), _mm_set1_ps(t.e[0].u0_1f)),
+                                       _mm_set1_ps(t.e[0].inv_du1f)));
+    }
+#endif
+    for (; j < m; ++j) {
+      const float a = clamp_alpha(t, static_cast<float>(alpha[start + j]));
+      ga[j] = alpha_grid(g, a);
+      gt[j] = t_grid(t, static_cast<float>(mu[start + j]), a);
     }
     for (std::size_t j = 0; j < m; ++j) out[start + j] = read(g, stencil(ga[j], g.n0), stencil(gt[j], g.n1));
   }
