@@ -172,6 +172,12 @@ TEST_CASE("render profile: batched forms equal the scalar forms bit for bit, cla
     for (std::size_t i = 0; i < n; ++i) CHECK(out[i] == render::microfacet_albedo_eavg_corr(t, alpha[i]));
     render::microfacet_albedo_kulla_conty_lobe_batch(t, mu, mu2, alpha, out);
     for (std::size_t i = 0; i < n; ++i) CHECK(out[i] == render::microfacet_albedo_kulla_conty_lobe(t, mu[i], mu2[i], alpha[i]));
+    // The lobe's packed coordinate path gives the E and E_avg lookups' own values, bit for bit.
+    for (std::size_t i = 0; i < n; ++i)
+      CHECK(render::microfacet_albedo_kulla_conty_lobe(t, mu[i], mu2[i], alpha[i]) ==
+            sc::kulla_conty_lobe_formula(render::microfacet_albedo_e_corr(t, mu[i], alpha[i]),
+                                         render::microfacet_albedo_e_corr(t, mu2[i], alpha[i]),
+                                         render::microfacet_albedo_eavg_corr(t, alpha[i])));
     // Clamping: outside the domain reads the edge; NaN reads the lower edge (finite).
     CHECK(render::microfacet_albedo_e_corr(t, 1.5, 0.5) == render::microfacet_albedo_e_corr(t, 1.0, 0.5));
     CHECK(render::microfacet_albedo_e_corr(t, -1.0, 0.5) == render::microfacet_albedo_e_corr(t, 0.0, 0.5));

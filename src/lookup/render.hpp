@@ -2,7 +2,7 @@
 // The render profile: lookups for a shading loop. Renderer conventions (mu = cos theta,
 // alpha = roughness, in that order), inline, no allocation and no check per call: every check
 // (schema, storage, ranges, the coordinate constants) runs once when the tables are loaded.
-// Coordinate maps cost square roots and one division, no log or pow.
+// Coordinate maps cost float square roots and one division, no log or pow.
 //
 // Example (built and run by CTest): docs/examples/render_profile.cpp.
 //
@@ -10,9 +10,9 @@
 // choice of layout in lookup/microfacet_albedo_schema.hpp, "Render profile"). Values are read
 // with 4-point Lagrange interpolation in the grid coordinate, the stencil and weights of
 // lookup::Table's cubic interpolation, so a render lookup equals the Table lookup of the same
-// dataset to rounding and the error the generator measured (attribute max_abs_error) is the
-// error of these functions (tests/test_lookup_render.cpp checks both against the exact
-// numerics, domain edges included).
+// dataset up to float rounding (below), and its error is the generator's measured one
+// (attribute max_abs_error) plus that rounding (tests/test_lookup_render.cpp checks both
+// against the exact numerics, domain edges included).
 //
 // Float evaluation. The lookups evaluate in IEEE binary32: the coordinate maps (square roots
 // and one division, a third of the cost of double ones on x86-64) and the 16-node weighted
@@ -23,9 +23,9 @@
 // evaluation of the same interpolant (lookup::Table's cubic read) at 16384 fixed points
 // uniform in the grid coordinates plus the domain's corners and edges, doubled, is
 // float_evaluation_error[q]; a lookup's stated error is lookup_error(q) = max_abs_error[q] +
-// float_evaluation_error[q]. Measured: E 3e-7 .. 5e-7, E_avg ~2e-7
-// (tests/test_lookup_render.cpp checks the bound at 10^5 other points). Scalar 2.2x faster than the double evaluation
-// (docs/speed.md).
+// float_evaluation_error[q]. Measured: E 5.4e-7 .. 7.6e-7, E_avg 1.6e-7 .. 1.8e-7 (doubled);
+// tests/test_lookup_render.cpp checks the bound at 10^5 other points. Against the previous
+// double evaluation: scalar E 31 -> 16-21 ns, batched 20 -> 9.5-12.5 ns (docs/speed.md).
 //
 // Inputs outside the domain are clamped to it (mu to [0, 1], alpha to the table's range);
 // NaN reads as the lower edge. There is no error policy: check inputs before the loop if a
@@ -330,11 +330,32 @@ inline double microfacet_albedo_eavg_sep(const MicrofacetAlbedo& t, double alpha
 // The alpha coordinate and its stencil are formed once for the three reads.
 inline double microfacet_albedo_kulla_conty_lobe(const MicrofacetAlbedo& t, double mu_o, double mu_i, double alpha) {
   const float a = detail::clamp_alpha(t, static_cast<float>(alpha));
+#if defined(__SSE2__)
+  // The three roots in one register: lanes alpha, r(mu_o), r(mu_i) of t = r^(1/4), two packed
+  // square roots and one packed division instead of six and two; each lane the scalar
+  // operations of alpha_grid and t_grid (IEEE), so the values are those of the E lookups.
+  {
+    const float mo = std::min(std::max(0.0f, static_cast<float>(mu_o)), 1.0f);
+    const float mi = std::min(std::max(0.0f, static_cast<float>(mu_i)), 1.0f);
+    const float ca = t.t_scalef * a;
+    const __m128 num = _mm_set_ps(1.0f, mi * (1.0f + ca), mo * (1.0f + ca), a);
+    const __m128 den = _mm_set_ps(1.0f, mi + ca, mo + ca, 1.0f);
+    alignas(16) float root[4];
+    _mm_store_ps(root, _mm_sqrt_ps(_mm_sqrt_ps(_mm_div_ps(num, den))));
+    const CubicGrid2& g = t.e[0];
+    const detail::Stencil sa = detail::stencil((root[0] - g.u0_0f) * g.inv_du0f, g.n0);
+    const float e_o = detail::read(g, sa, detail::stencil((root[1] - g.u0_1f) * g.inv_du1f, g.n1));
+    const float e_i = detail::read(g, sa, detail::stencil((root[2] - g.u0_1f) * g.inv_du1f, g.n1));
+    const double e_avg = detail::read(t.eavg[0], (static_cast<double>(root[0]) - t.eavg[0].u0) * t.eavg[0].inv_du);
+    return schema::microfacet_albedo::kulla_conty_lobe_formula(e_o, e_i, e_avg);
+  }
+#else
   const detail::Stencil sa = detail::stencil(detail::alpha_grid(t.e[0], a), t.e[0].n0);
   const float e_o = detail::read(t.e[0], sa, detail::stencil(detail::t_grid(t, static_cast<float>(mu_o), a), t.e[0].n1));
   const float e_i = detail::read(t.e[0], sa, detail::stencil(detail::t_grid(t, static_cast<float>(mu_i), a), t.e[0].n1));
   const double e_avg = detail::read(t.eavg[0], detail::alpha_grid(t.eavg[0], a));
   return schema::microfacet_albedo::kulla_conty_lobe_formula(e_o, e_i, e_avg);
+#endif
 }
 
 // Batched forms: out[i] = the scalar form at (mu[i], alpha[i]), bit for bit (the same inline
