@@ -15,6 +15,7 @@ from . import _conventions as conv
 from . import _core
 
 __all__ = ["microfacet_albedo", "microfacet_albedo_avg", "kulla_conty_lobe", "kulla_conty_fresnel_factor",
+           "microfacet_albedo_render", "microfacet_albedo_avg_render", "kulla_conty_lobe_render", "render_errors",
            "smith_gbeckmann_g1", "fresnel_dr", "fresnel_avg_conductor", "h_function", "ls_kd", "ls_plane_albedo"]
 
 
@@ -120,6 +121,103 @@ def kulla_conty_lobe(mu_o, mu_i, alpha, p=None, *, ndf="ggx", precise=True, tabl
     args = [mu_o, mu_i, alpha] + ([p] if p is not None else [])
     names = ["mu_o", "mu_i", "alpha"] + (["p"] if p is not None else [])
     return _run(_core.kulla_conty_lobe, args, names, errors, ndf=ndf, precise=precise, tables=tables)
+
+
+_RENDER_NOTE = """The render profile (lookup/render.hpp, docs/renderer-integration.md): 80 x 128 float32
+    tables on (alpha^(1/4), t(mu; alpha)), evaluated in float like a shader, for GGX and
+    Beckmann; range mu in [0, 1] (mu = 0 included), alpha in the tables' range ([0.01, 1] by
+    default). Its error (render_errors) is the table's stated error plus the float
+    evaluation's, measured when the tables are loaded: ~8e-7 (GGX E), ~5e-6 (Beckmann E),
+    ~2e-7 (E_avg). The precise tables (microfacet_albedo, precise=True) are ~1e-8 and slower."""
+
+
+def microfacet_albedo_render(mu, alpha, *, ndf="ggx", quantity="E_corr", tables=None, errors="nan"):
+    """microfacet_albedo_render(mu, alpha, *, ndf='ggx', quantity='E_corr', tables=None, errors='nan')
+
+    Directional albedo E(mu) with F = 1 from the render profile
+    (lookup::render::microfacet_albedo_e_corr_batch / _e_sep_batch).
+
+    {note}
+
+    Parameters
+    ----------
+    mu : array_like
+        cos(theta) of the viewing direction, units 1; range [0, 1].
+    alpha : array_like
+        roughness, units 1.
+    ndf : {{'ggx', 'beckmann'}}
+    quantity : {{'E_corr', 'E_sep'}}
+        height-correlated Smith G2 or separable G1 G1.
+
+    Returns
+    -------
+    E : ndarray, units 1.
+    """
+    return _run(_core.microfacet_albedo_render, [mu, alpha], ["mu", "alpha"], errors, ndf=ndf, quantity=quantity,
+                tables=tables)
+
+
+def microfacet_albedo_avg_render(alpha, *, ndf="ggx", quantity="Eavg_corr", tables=None, errors="nan"):
+    """microfacet_albedo_avg_render(alpha, *, ndf='ggx', quantity='Eavg_corr', tables=None, errors='nan')
+
+    E_avg = 2 Integral_0^1 E(mu) mu dmu from the render profile's 256-point float32 tables
+    (lookup::render::microfacet_albedo_eavg_corr / _eavg_sep).
+
+    {note}
+
+    Parameters
+    ----------
+    alpha : array_like
+        roughness, units 1.
+    ndf : {{'ggx', 'beckmann'}}
+    quantity : {{'Eavg_corr', 'Eavg_sep'}}
+
+    Returns
+    -------
+    E_avg : ndarray, units 1.
+    """
+    return _run(_core.microfacet_albedo_avg_render, [alpha], ["alpha"], errors, ndf=ndf, quantity=quantity, tables=tables)
+
+
+def kulla_conty_lobe_render(mu_o, mu_i, alpha, *, ndf="ggx", tables=None, errors="nan"):
+    """kulla_conty_lobe_render(mu_o, mu_i, alpha, *, ndf='ggx', tables=None, errors='nan')
+
+    The Kulla-Conty multiple-scattering lobe (F = 1)
+    f_ms = (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg)) from the render profile
+    (lookup::render::microfacet_albedo_kulla_conty_lobe_batch). Its error is E's amplified by
+    1 / (1 - E_avg) (docs/speed.md).
+
+    {note}
+
+    Parameters
+    ----------
+    mu_o, mu_i : array_like
+        cos(theta) of the outgoing and incident directions, units 1; range [0, 1].
+    alpha : array_like
+        roughness, units 1.
+
+    Returns
+    -------
+    f_ms : ndarray, units sr-1.
+    """
+    return _run(_core.kulla_conty_lobe_render, [mu_o, mu_i, alpha], ["mu_o", "mu_i", "alpha"], errors, ndf=ndf,
+                tables=tables)
+
+
+def render_errors(*, ndf="ggx", tables=None):
+    """render_errors(*, ndf='ggx', tables=None)
+
+    The render profile's stated errors for one NDF: a dict from quantity ('E_corr', 'E_sep',
+    'Eavg_corr', 'Eavg_sep') to (table error, float evaluation error, their sum), max absolute,
+    units 1. The table error is the generator's (attribute max_abs_error); the float
+    evaluation's is measured when the tables are loaded (lookup::render::MicrofacetAlbedo).
+    """
+    return _core.render_errors(ndf, conv.tables_folder(tables))
+
+
+for _f in (microfacet_albedo_render, microfacet_albedo_avg_render, kulla_conty_lobe_render):
+    _f.__doc__ = _f.__doc__.format(note=_RENDER_NOTE)
+del _f
 
 
 def kulla_conty_fresnel_factor(f_avg, alpha, p=None, *, ndf="ggx", tables=None, errors="nan"):

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +20,7 @@
 #include "lookup/ls.hpp"
 #include "lookup/microfacet_albedo.hpp"
 #include "lookup/number_format.hpp"
+#include "lookup/render.hpp"
 #include "lookup/smith_gbeckmann.hpp"
 #include "lookup/table_set.hpp"
 
@@ -151,7 +154,76 @@ void need_p(const Microfacet& m, std::size_t ncols, std::size_t without_p, const
   if (!m.three_d && ncols != without_p) throw py::value_error(who + ": p is only for ndf 'gbeckmann'");
 }
 
+// The render profile of one NDF (lookup/render.hpp), loaded once per table folder and NDF:
+// a load copies the tables and measures the float evaluation's error (~10 ms), so it is kept.
+std::shared_ptr<const lookup::render::MicrofacetAlbedo> render_tables(const std::optional<std::string>& tables,
+                                                                      const std::string& ndf) {
+  if (ndf != "ggx" && ndf != "beckmann")
+    throw py::value_error("ndf = '" + ndf + "' is not one of 'ggx', 'beckmann' (the render profile)");
+  lookup::TableSet& ts = set_of(tables);
+  static std::mutex mutex;
+  static std::map<std::pair<std::string, std::string>, std::shared_ptr<const lookup::render::MicrofacetAlbedo>> cache;
+  const auto key = std::make_pair(ts.dir().string(), ndf);
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = cache[key];
+  if (!slot) slot = std::make_shared<const lookup::render::MicrofacetAlbedo>(lookup::render::microfacet_albedo_load(ts, ndf));
+  return slot;
+}
+
 }  // namespace
+
+// The render profile (lookup::render::microfacet_albedo_*_batch): float evaluation of the
+// 80 x 128 float32 tables; ranges mu in [0, 1], alpha in the tables' range.
+py::array_t<double> microfacet_albedo_render(const std::vector<Column>& cols, const std::string& ndf,
+                                             const std::string& quantity, const std::optional<std::string>& tables,
+                                             const std::string& errors) {
+  const auto t = render_tables(tables, ndf);
+  if (quantity != "E_corr" && quantity != "E_sep")
+    throw py::value_error("quantity = '" + quantity + "' is not one of 'E_corr', 'E_sep' (the render profile)");
+  const bool corr = quantity == "E_corr";
+  const std::vector<Range> r{{"mu", 0.0, 1.0}, {"alpha", t->alpha_lo, t->alpha_hi}};
+  return run_lookup("microfacet_albedo_render", cols, r, parse_errors(errors),
+                    [&](std::size_t, std::size_t n, const std::vector<const double*>& x, double* out) {
+                      if (corr) lookup::render::microfacet_albedo_e_corr_batch(*t, {x[0], n}, {x[1], n}, {out, n});
+                      else lookup::render::microfacet_albedo_e_sep_batch(*t, {x[0], n}, {x[1], n}, {out, n});
+                    });
+}
+
+py::array_t<double> microfacet_albedo_avg_render(const std::vector<Column>& cols, const std::string& ndf,
+                                                 const std::string& quantity, const std::optional<std::string>& tables,
+                                                 const std::string& errors) {
+  const auto t = render_tables(tables, ndf);
+  if (quantity != "Eavg_corr" && quantity != "Eavg_sep")
+    throw py::value_error("quantity = '" + quantity + "' is not one of 'Eavg_corr', 'Eavg_sep'");
+  const bool corr = quantity == "Eavg_corr";
+  return run_lookup("microfacet_albedo_avg_render", cols, {{"alpha", t->alpha_lo, t->alpha_hi}}, parse_errors(errors),
+                    [&](std::size_t, std::size_t n, const std::vector<const double*>& x, double* out) {
+                      if (corr) lookup::render::microfacet_albedo_eavg_corr_batch(*t, {x[0], n}, {out, n});
+                      else
+                        for (std::size_t i = 0; i < n; ++i) out[i] = lookup::render::microfacet_albedo_eavg_sep(*t, x[0][i]);
+                    });
+}
+
+py::array_t<double> kulla_conty_lobe_render(const std::vector<Column>& cols, const std::string& ndf,
+                                            const std::optional<std::string>& tables, const std::string& errors) {
+  const auto t = render_tables(tables, ndf);
+  const std::vector<Range> r{{"mu_o", 0.0, 1.0}, {"mu_i", 0.0, 1.0}, {"alpha", t->alpha_lo, t->alpha_hi}};
+  return run_lookup("kulla_conty_lobe_render", cols, r, parse_errors(errors),
+                    [&](std::size_t, std::size_t n, const std::vector<const double*>& x, double* out) {
+                      lookup::render::microfacet_albedo_kulla_conty_lobe_batch(*t, {x[0], n}, {x[1], n}, {x[2], n}, {out, n});
+                    });
+}
+
+// The stated errors of the render profile of one NDF: by quantity E_corr, E_sep, Eavg_corr,
+// Eavg_sep, the table's (max_abs_error), the float evaluation's and their sum (lookup_error).
+py::dict render_errors(const std::string& ndf, const std::optional<std::string>& tables) {
+  const auto t = render_tables(tables, ndf);
+  py::dict d;
+  const char* names[4] = {"E_corr", "E_sep", "Eavg_corr", "Eavg_sep"};
+  for (int q = 0; q < 4; ++q)
+    d[names[q]] = py::make_tuple(t->max_abs_error[q], t->float_evaluation_error[q], t->lookup_error(q));
+  return d;
+}
 
 py::array_t<double> microfacet_albedo(const std::vector<Column>& cols, const std::string& ndf, const std::string& quantity,
                                       bool precise, const std::optional<std::string>& tables, const std::string& errors) {

@@ -35,6 +35,14 @@ py::array_t<double> ls_kd(const std::vector<Column>&, const std::optional<std::s
 py::array_t<double> ls_plane_albedo(const std::vector<Column>&, const std::optional<std::string>& tables,
                                     const std::string& errors);
 py::array_t<double> table_eval(const lookup::Table& t, const std::vector<Column>& cols, const std::string& errors);
+py::array_t<double> microfacet_albedo_render(const std::vector<Column>&, const std::string& ndf, const std::string& quantity,
+                                             const std::optional<std::string>& tables, const std::string& errors);
+py::array_t<double> microfacet_albedo_avg_render(const std::vector<Column>&, const std::string& ndf,
+                                                 const std::string& quantity, const std::optional<std::string>& tables,
+                                                 const std::string& errors);
+py::array_t<double> kulla_conty_lobe_render(const std::vector<Column>&, const std::string& ndf,
+                                            const std::optional<std::string>& tables, const std::string& errors);
+py::dict render_errors(const std::string& ndf, const std::optional<std::string>& tables);
 }  // namespace brdftab::pycore
 
 using namespace brdftab;
@@ -52,6 +60,10 @@ PYBIND11_MODULE(_core, m) {
   m.def("microfacet_albedo_avg", &microfacet_albedo_avg, c, py::arg("ndf"), py::arg("quantity"), t, e);
   m.def("kulla_conty_lobe", &kulla_conty_lobe, c, py::arg("ndf"), py::arg("precise"), t, e);
   m.def("kulla_conty_fresnel_factor", &kulla_conty_fresnel_factor, c, py::arg("ndf"), t, e);
+  m.def("microfacet_albedo_render", &microfacet_albedo_render, c, py::arg("ndf"), py::arg("quantity"), t, e);
+  m.def("microfacet_albedo_avg_render", &microfacet_albedo_avg_render, c, py::arg("ndf"), py::arg("quantity"), t, e);
+  m.def("kulla_conty_lobe_render", &kulla_conty_lobe_render, c, py::arg("ndf"), t, e);
+  m.def("render_errors", &render_errors, py::arg("ndf"), t);
   m.def("smith_gbeckmann_g1", &smith_gbeckmann_g1, c, t, e);
   m.def("fresnel_dr", &fresnel_dr, c, t, e);
   m.def("fresnel_avg_conductor", &fresnel_avg_conductor, c, t, e);

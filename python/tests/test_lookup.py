@@ -149,3 +149,58 @@ def test_table_errors_name_the_parameter():
         lookup.h_function(0.5, 0.5, kind="x", tables=TABLES)
     with pytest.raises(brdftab.TableFileError):
         lookup.ls_kd(0.5, tables="/nonexistent")
+
+
+def test_render_profile_against_the_exact_quadrature_and_the_precise_tables():
+    # The render profile (float evaluation of 80 x 128 float32 tables) against the exact
+    # numerics, within its stated error (table + float evaluation, render_errors), and against
+    # the precise tables, which share no code or values with it beyond the numerics they are
+    # filled from.
+    mu = np.concatenate([RNG.uniform(1e-6, 1, 30), [1e-6, 1e-3, 1.0]])
+    alpha = np.concatenate([np.exp(RNG.uniform(np.log(0.01), 0, 30)), [0.01, 0.5, 1.0]])
+    for ndf, exact_fn in (("ggx", brdftab.microfacet_albedo_ggx), ("beckmann", brdftab.microfacet_albedo_beckmann)):
+        errs = lookup.render_errors(ndf=ndf, tables=TABLES)
+        exact = exact_fn(mu, alpha)
+        for q in ("E_corr", "E_sep"):
+            table_err, float_err, total = errs[q]
+            assert total == pytest.approx(table_err + float_err)
+            assert 0 < float_err <= 2e-6 and total <= 1e-5
+            got = lookup.microfacet_albedo_render(mu, alpha, ndf=ndf, quantity=q, tables=TABLES)
+            assert np.max(np.abs(got - getattr(exact, q))) <= SAMPLE_MARGIN * total, (ndf, q)
+        grid = RNG.uniform(0, 1, 2000), np.exp(RNG.uniform(np.log(0.01), 0, 2000))
+        precise = lookup.microfacet_albedo(np.maximum(grid[0], 1e-6), grid[1], ndf=ndf, tables=TABLES)
+        got = lookup.microfacet_albedo_render(np.maximum(grid[0], 1e-6), grid[1], ndf=ndf, tables=TABLES)
+        bound = errs["E_corr"][2] + stated("microfacet_albedo.h5", f"microfacet_albedo_{ndf}_E_corr_precise")
+        assert np.max(np.abs(got - precise)) <= SAMPLE_MARGIN * bound, ndf
+        a = np.exp(RNG.uniform(np.log(0.01), 0, 200))
+        avg = lookup.microfacet_albedo_avg_render(a, ndf=ndf, tables=TABLES)
+        ref = lookup.microfacet_albedo_avg(a, ndf=ndf, tables=TABLES)
+        bound = errs["Eavg_corr"][2] + stated("microfacet_albedo.h5", f"microfacet_albedo_avg_{ndf}_Eavg_corr")
+        assert np.max(np.abs(avg - ref)) <= SAMPLE_MARGIN * bound, ndf
+
+
+def test_render_profile_conventions_and_the_lobe_formula():
+    mu_o, mu_i, alpha = RNG.uniform(0, 1, 50), RNG.uniform(0, 1, 50), np.exp(RNG.uniform(np.log(0.01), 0, 50))
+    lobe = lookup.kulla_conty_lobe_render(mu_o, mu_i, alpha, tables=TABLES)
+    e_o = lookup.microfacet_albedo_render(mu_o, alpha, tables=TABLES)
+    e_i = lookup.microfacet_albedo_render(mu_i, alpha, tables=TABLES)
+    e_avg = lookup.microfacet_albedo_avg_render(alpha, tables=TABLES)
+    np.testing.assert_allclose(lobe, (1 - e_o) * (1 - e_i) / (math.pi * (1 - e_avg)), rtol=1e-14)
+    # Positional and keyword, broadcasting, float32 in and out, NaN in NaN out, mu = 0 inside.
+    assert lookup.microfacet_albedo_render(0.5, 0.3, tables=TABLES) == lookup.microfacet_albedo_render(
+        mu=0.5, alpha=0.3, tables=TABLES)
+    assert lookup.microfacet_albedo_render(np.zeros((2, 1)), np.array([0.1, 0.2, 0.3]), tables=TABLES).shape == (2, 3)
+    out = lookup.microfacet_albedo_render(np.float32([0.0, 0.5, np.nan]), np.float32(0.3), tables=TABLES)
+    assert out.dtype == np.float32 and np.isfinite(out[:2]).all() and np.isnan(out[2])
+    # Outside the range: NaN by default, the edge with errors="clamp", a named error with "raise".
+    assert np.isnan(lookup.microfacet_albedo_render(1.5, 0.3, tables=TABLES))
+    assert lookup.microfacet_albedo_render(1.5, 0.3, errors="clamp", tables=TABLES) == lookup.microfacet_albedo_render(
+        1.0, 0.3, tables=TABLES)
+    assert lookup.microfacet_albedo_avg_render(5.0, errors="clamp", tables=TABLES) == lookup.microfacet_albedo_avg_render(
+        1.0, tables=TABLES)
+    with pytest.raises(ValueError, match=r"parameter 'alpha': value 0.001 is outside the table range \[0.01, 1\]"):
+        lookup.microfacet_albedo_render(0.5, 1e-3, errors="raise", tables=TABLES)
+    with pytest.raises(ValueError, match="'gbeckmann' is not one of 'ggx', 'beckmann'"):
+        lookup.microfacet_albedo_render(0.5, 0.3, ndf="gbeckmann", tables=TABLES)
+    with pytest.raises(ValueError, match="'split_scale' is not one of 'E_corr', 'E_sep'"):
+        lookup.microfacet_albedo_render(0.5, 0.3, quantity="split_scale", tables=TABLES)

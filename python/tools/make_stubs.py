@@ -109,9 +109,10 @@ def lookup_stub():
     lines = [HEADER]
     lines.append("__all__: list[str]")
     lines.append("")
+    returns = {"render_errors": "dict[str, tuple[float, float, float]]"}
     for name in lookup.__all__:
         f = getattr(lookup, name)
-        lines.append(f"def {name}({params_text(inspect.signature(f), lookup_annotation)}) -> Result: ...")
+        lines.append(f"def {name}({params_text(inspect.signature(f), lookup_annotation)}) -> {returns.get(name, 'Result')}: ...")
     return "\n".join(lines) + "\n"
 
 
