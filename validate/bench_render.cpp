@@ -24,6 +24,7 @@
 #include "generators/microfacet_albedo.hpp"
 #include "lookup/microfacet_albedo.hpp"
 #include "lookup/render.hpp"
+#include "lookup/render_table.hpp"
 #include "lookup/table_set.hpp"
 #include "validate/bench.hpp"
 #include "validate/render_baseline.hpp"
@@ -218,6 +219,67 @@ void register_render_benchmarks(const BenchContext& ctx) {
                  },
                  0.0, static_cast<double>(pk->e[0]->bytes()));
   }
+  // The render profile of the other quantities (lookup/render_table.hpp): float evaluation of
+  // their compact tables against lookup::Table's generic double read of the same tables, at
+  // 65536 points uniform in each table's grid coordinates. Counters: the float read's largest
+  // difference from the double read at those points, its stated lookup_error, bytes.
+  {
+    const std::pair<const char*, const char*> cases[] = {{"hfunc.h5", "hfunc_iso_compact"},
+                                                         {"hfunc.h5", "hfunc_ls0_compact"},
+                                                         {"hfunc.h5", "hfunc_ls1_compact"},
+                                                         {"smith_gbeckmann.h5", "smith_gbeckmann_g1_compact"},
+                                                         {"fresnel.h5", "fresnel_avg_conductor_n_above_1"},
+                                                         {"fresnel.h5", "fresnel_dr"},
+                                                         {"ls.h5", "ls_kd"}};
+    for (const auto& [file, dataset] : cases) {
+      std::shared_ptr<const lookup::render::FloatTable> f;
+      try {
+        f = std::make_shared<const lookup::render::FloatTable>(lookup::render::float_table_load(*precise_set, file, dataset));
+      } catch (const std::exception&) {
+        continue;  // not in --tables
+      }
+      const lookup::Table* t = &precise_set->table(file, dataset);
+      auto xs = std::make_shared<Points>();  // mu <- axis 0, alpha <- axis 1 (unused names)
+      std::mt19937_64 r(77);
+      for (std::size_t i = 0; i < kN; ++i)
+        for (int d = 0; d < t->rank(); ++d) {
+          const lookup::Axis& a = t->axis(d);
+          const double x = std::min(std::max(a.x_lo, lookup::invert_transform(a.transform, a.u0 + U(r) * (a.n - 1) * a.du, a.scale)), a.x_hi);
+          (d == 0 ? xs->mu : xs->alpha).push_back(x);
+        }
+      const bool two = t->rank() == 2;
+      double diff = 0;
+      for (std::size_t i = 0; i < kN; ++i) {
+        const double a = two ? lookup::render::eval(*f, xs->mu[i], xs->alpha[i]) : lookup::render::eval(*f, xs->mu[i]);
+        const double b = two ? t->eval2(xs->mu[i], xs->alpha[i]) : t->eval1(xs->mu[i]);
+        diff = std::max(diff, std::abs(a - b));
+      }
+      const std::string base = std::string("render/table/") + dataset;
+      const double bytes = static_cast<double>(f->bytes());
+      const double stated = f->lookup_error();
+      const auto counters = [diff, stated](benchmark::State& st) {
+        st.counters["max_abs_diff_vs_double_read"] = diff;
+        st.counters["lookup_error"] = stated;
+      };
+      benchmark::RegisterBenchmark((base + "/render_float").c_str(), [xs, f, two, bytes, counters](benchmark::State& st) {
+        const std::size_t n = xs->mu.size();
+        for (auto _ : st)
+          for (std::size_t i = 0; i < n; ++i)
+            benchmark::DoNotOptimize(two ? lookup::render::eval(*f, xs->mu[i], xs->alpha[i]) : lookup::render::eval(*f, xs->mu[i]));
+        per_call(st, n);
+        st.counters["table_bytes"] = bytes;
+        counters(st);
+      })->Repetitions(5)->ReportAggregatesOnly(true);
+      benchmark::RegisterBenchmark((base + "/table_double").c_str(), [xs, t, two, ps = precise_set](benchmark::State& st) {
+        const std::size_t n = xs->mu.size();
+        for (auto _ : st)
+          for (std::size_t i = 0; i < n; ++i)
+            benchmark::DoNotOptimize(two ? t->eval2(xs->mu[i], xs->alpha[i]) : t->eval1(xs->mu[i]));
+        per_call(st, n);
+      })->Repetitions(5)->ReportAggregatesOnly(true);
+    }
+  }
+
   // Floors: the pieces of a render E read alone (GGX tables).
   {
     auto t = render[0];
