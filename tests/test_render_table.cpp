@@ -32,7 +32,8 @@ struct Case {
   const char* dataset;
 };
 // The render profile of the other quantities (docs/speed.md): H (iso, H^(0..2)), Smith G1 of
-// the generalized Beckmann NDF, the conductor F_avg (n > 1), F_dr, and d'Eon's k_d(c).
+// the generalized Beckmann NDF, the conductor F_avg (n > 1), F_dr, d'Eon's k_d(c), and one
+// per-material albedo each of hazy gloss and Holzschuch-Pacanowski (the default materials).
 const Case kCases[] = {{"hfunc.h5", "hfunc_iso_compact"},
                        {"hfunc.h5", "hfunc_ls0_compact"},
                        {"hfunc.h5", "hfunc_ls1_compact"},
@@ -40,7 +41,9 @@ const Case kCases[] = {{"hfunc.h5", "hfunc_iso_compact"},
                        {"smith_gbeckmann.h5", "smith_gbeckmann_g1_compact"},
                        {"fresnel.h5", "fresnel_avg_conductor_n_above_1"},
                        {"fresnel.h5", "fresnel_dr"},
-                       {"ls.h5", "ls_kd"}};
+                       {"ls.h5", "ls_kd"},
+                       {"hazy_gloss.h5", "hazy_gloss_albedo_ggx_patch_vase"},
+                       {"hp.h5", "hp_albedo_reflection_plastic_g"}};
 
 // A random point of an axis, uniform in its physical range mapped through [0, 1]^4 towards
 // the low end half of the time (the singular ends: c -> 1 is the high end of c, mu -> 0 low).

@@ -230,7 +230,9 @@ void register_render_benchmarks(const BenchContext& ctx) {
                                                          {"smith_gbeckmann.h5", "smith_gbeckmann_g1_compact"},
                                                          {"fresnel.h5", "fresnel_avg_conductor_n_above_1"},
                                                          {"fresnel.h5", "fresnel_dr"},
-                                                         {"ls.h5", "ls_kd"}};
+                                                         {"ls.h5", "ls_kd"},
+                                                         {"hazy_gloss.h5", "hazy_gloss_albedo_ggx_patch_vase"},
+                                                         {"hp.h5", "hp_albedo_reflection_plastic_g"}};
     for (const auto& [file, dataset] : cases) {
       std::shared_ptr<const lookup::render::FloatTable> f;
       try {

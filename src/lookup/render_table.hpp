@@ -1,9 +1,10 @@
 #pragma once
 // The render profile for any regular 1-D or 2-D table: a float32 copy of a lookup::Table read
 // with float arithmetic, like lookup/render.hpp's microfacet albedo (same grid reads,
-// lookup/render_grid.hpp). Renderer-facing quantities whose compact tables already meet the
-// render target (<= 1e-5, <= 64 KB) are read this way; which dataset serves which quantity,
-// measured: docs/speed.md ("Render profile of the other quantities").
+// lookup/render_grid.hpp). Renderer-facing quantities kept in small 1-D or 2-D tables (H, G1,
+// F_avg, F_dr, k_d, the per-material hp and hazy-gloss albedos) are read this way; which
+// dataset serves which quantity, measured: docs/speed.md ("Render profile of the other
+// quantities").
 //
 // Float evaluation: each axis's transform u = T(x) in float, with the differences 1 - x and
 // x - 1 formed in double first (no cancellation where x -> 1: the c -> 1 axes of the
