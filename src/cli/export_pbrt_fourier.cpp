@@ -66,14 +66,17 @@ std::vector<double> pbrt_fourier_mu_nodes(int half_nodes, double mu_min) {
   // Towards 0 the corner mu_i / (mu_i + mu_o) is scale-free: its Catmull-Rom error depends on
   // the ratio of neighbouring nodes only (<= 1.25: ~2e-4 along one axis). Below the first graded
   // node whose ratio to the next is <= 1.25, the nodes are geometric with ratio 1.25 down to
-  // mu_min (the smallest mu the source tables hold).
+  // mu_min / 4 (mu_min: the smallest mu the source tables hold). The nodes below mu_min
+  // (single scattering exact, multiple scattering read at mu_min) keep the spline on
+  // [mu_min, 10 mu_min) off the mu = 0 nodes: 5.3e-4 there, from 4.8e-3 with nodes stopping
+  // at mu_min (tests/test_ls_pbrt_fourier.cpp).
   constexpr double kRatio = 1.25;
   if (!(mu_min > 0 && mu_min < 0.01))
     throw std::invalid_argument("pbrt-fourier: mu_min = " + std::to_string(mu_min) + " is not in (0, 0.01)");
   std::size_t first = 0;
   while (first + 1 < pos.size() && pos[first + 1] / pos[first] > kRatio) ++first;
   std::vector<double> geo;
-  for (double m = pos[first] / kRatio; m >= mu_min * (1 - 1e-9); m /= kRatio) geo.push_back(static_cast<double>(static_cast<float>(m)));
+  for (double m = pos[first] / kRatio; m >= 0.25 * mu_min * (1 - 1e-9); m /= kRatio) geo.push_back(static_cast<double>(static_cast<float>(m)));
   pos.erase(pos.begin(), pos.begin() + std::ptrdiff_t(first));
   pos.insert(pos.begin(), geo.rbegin(), geo.rend());
   // mu = 0 four times: pbrt's Catmull-Rom weights take their end slopes from the neighbours
