@@ -163,21 +163,25 @@ std::vector<Quantity> quantities() {
     const lookup::LsBrdfValue v = brdf_tables(ctx).eval(in[0], in[1], in[2], in[3]);
     out[0] = v.f, out[1] = v.f_single, out[2] = v.f_multiple;
   };
-  // A per-material pair (`--dataset ls_brdf_modes_material_NAME`, read with its
-  // ls_brdf_corner_material_NAME): f(mu_i, mu_o, phi) at the material's c (attribute ls_c).
-  f.material_tables.push_back(
-      {std::string(schema::ls::kFile), std::string(schema::ls::kBrdfModesMaterial.name),
-       {{"c", "ls_c"}}, [](const lookup::LoadedTable& t, lookup::TableSet& set) -> Method {
-         const std::string name = t.info.dataset.substr(schema::ls::kBrdfModesMaterial.name.size());
-         const lookup::LoadedTable& corner = set.get(std::string(schema::ls::kFile),
-                                                     std::string(schema::ls::kBrdfCornerMaterial.name) + name);
-         const double c = std::get<double>(t.info.attributes.at("ls_c"));
-         auto material = std::make_shared<const lookup::LsBrdfMaterial>(t.table, corner.table, c);
-         return [material](std::span<const double> in, std::span<double> out, const EvalContext&) {
-           const lookup::LsBrdfValue v = material->eval(in[1], in[2], in[3]);
-           out[0] = v.f, out[1] = v.f_single, out[2] = v.f_multiple;
-         };
-       }});
+  // A per-material pair (`--dataset ls_brdf_modes_material_NAME` or
+  // `ls_brdf_corner_material_NAME`, read with its companion of the same NAME): f(mu_i, mu_o,
+  // phi) at the material's c (attribute ls_c).
+  for (const bool by_corner : {false, true}) {
+    const std::string own(by_corner ? schema::ls::kBrdfCornerMaterial.name : schema::ls::kBrdfModesMaterial.name);
+    const std::string other(by_corner ? schema::ls::kBrdfModesMaterial.name : schema::ls::kBrdfCornerMaterial.name);
+    f.material_tables.push_back(
+        {std::string(schema::ls::kFile), own, {{"c", "ls_c"}},
+         [own, other, by_corner](const lookup::LoadedTable& t, lookup::TableSet& set) -> Method {
+           const lookup::LoadedTable& pair = set.get(std::string(schema::ls::kFile), other + t.info.dataset.substr(own.size()));
+           const double c = std::get<double>(t.info.attributes.at("ls_c"));
+           auto material = std::make_shared<const lookup::LsBrdfMaterial>(by_corner ? pair.table : t.table,
+                                                                          by_corner ? t.table : pair.table, c);
+           return [material](std::span<const double> in, std::span<double> out, const EvalContext&) {
+             const lookup::LsBrdfValue v = material->eval(in[1], in[2], in[3]);
+             out[0] = v.f, out[1] = v.f_single, out[2] = v.f_multiple;
+           };
+         }});
+  }
   f.methods["fit"] = model(numerics::LsDeonVariant::as_printed);
   f.methods["fit_corrected"] = model(numerics::LsDeonVariant::corrected);
   f.methods["fit_fast"] = [](std::span<const double> in, std::span<double> out, const EvalContext&) {
