@@ -162,11 +162,7 @@ inline double microfacet_albedo_eavg(const MicrofacetAlbedo& t, int q, float alp
 // (mu = 0, 1e-6, 1, alpha at both ends), doubled.
 inline void measure_float_evaluation_error(MicrofacetAlbedo& out, const Table* tabs[4]) {
   namespace sc = schema::microfacet_albedo;
-  std::uint64_t state = 0x9e3779b97f4a7c15ull;
-  const auto uniform = [&state] {  // Knuth's MMIX LCG, the top 53 bits
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return static_cast<double>(state >> 11) * 0x1.0p-53;
-  };
+  Lcg uniform{0x9e3779b97f4a7c15ull};
   const double x_lo = std::sqrt(std::sqrt(out.alpha_lo)), x_hi = std::sqrt(std::sqrt(out.alpha_hi));
   std::vector<double> alphas, mus;
   for (double a : {out.alpha_lo, out.alpha_hi, std::sqrt(out.alpha_lo * out.alpha_hi)})

@@ -5,6 +5,7 @@
 // has it.
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -78,6 +79,16 @@ inline double read_cubic1(const float* v, int n, double g) {
   return -(t1 * t2 * t3) * (1.0 / 6) * p[0] + (t * t2 * t3) * 0.5 * p[1] - (t * t1 * t3) * 0.5 * p[2] +
          (t * t1 * t2) * (1.0 / 6) * p[3];
 }
+// The fixed point sets of the load-time error measurements (render.hpp, render_table.hpp):
+// Knuth's MMIX LCG, uniform doubles in [0, 1) from its top 53 bits; the same points at every load.
+struct Lcg {
+  std::uint64_t state;
+  double operator()() {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  }
+};
+
 // Linear (2-point) reads: cell i = clamp(floor(g), 0, n - 2), weight t = g - i (lookup::Table's
 // linear rule), in float.
 struct Cell {

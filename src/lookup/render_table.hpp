@@ -88,11 +88,7 @@ inline double eval2(const FloatTable& t, double x0, double x1) {
 
 // The float evaluation's error against t's own double evaluation (top of this file).
 inline double measure_float_evaluation_error(const FloatTable& f, const Table& t) {
-  std::uint64_t state = 0x2545f4914f6cdd1dull;
-  const auto uniform = [&state] {  // Knuth's MMIX LCG, the top 53 bits
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return static_cast<double>(state >> 11) * 0x1.0p-53;
-  };
+  Lcg uniform{0x2545f4914f6cdd1dull};
   // Per axis: points at both ends and 1e-3, 1e-1 of a cell inside them.
   std::vector<double> edge[2];
   for (int d = 0; d < t.rank(); ++d) {
