@@ -2,7 +2,7 @@
 # Installs the Debian packages brdftab needs, if missing. Idempotent; silent when
 # everything is already there.
 set -euo pipefail
-packages=(cmake g++ make git libeigen3-dev libboost-dev libboost-math-dev libhdf5-dev doctest-dev libcli11-dev
+packages=(cmake g++ make ccache git libeigen3-dev libboost-dev libboost-math-dev libhdf5-dev doctest-dev libcli11-dev
           nlohmann-json3-dev libbenchmark-dev gnuplot-nox pybind11-dev python3-dev python3-numpy python3-pytest
           python3-h5py python3-xarray python3-h5netcdf python3-netcdf4 netcdf-bin glslang-tools libopenexr-dev
           libvulkan-dev mesa-vulkan-drivers
