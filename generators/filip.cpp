@@ -1,6 +1,7 @@
-// Table family filip (issue 16): for each material of the manifest, four tables of the Filip et
-// al. highlight-stencil BRDF (numerics/filip_stencil_model.hpp), schema lookup/filip_schema.hpp:
-//   filip_brdf_<m>             ln(f + 1e-10) on (theta_i, phi_i, theta_o, phi_o), float32, multilinear;
+// Table family filip: for each material of the manifest, the sampling tables of the Filip et al.
+// highlight-stencil BRDF (numerics/filip_stencil_model.hpp), schema lookup/filip_schema.hpp:
+//   filip_brdf_<m>             ln(f + 1e-10) on (theta_i, phi_i, theta_o, phi_o), float32, multilinear,
+//                              only with "brdf": true (Config::brdf: too coarse for the highlights);
 //   filip_albedo_<m>           ln of the integral over theta_o <= theta_max of f cos;
 //   filip_marginal_cdf_<m>     the theta_o marginal CDF of f cos on the strip edges;
 //   filip_conditional_cdf_<m>  the phi_o CDF within each theta_o strip.
@@ -9,7 +10,7 @@
 // the incident grid nodes. Manifest entry:
 //   { "materials": [{"name": "fabric", "parameters": {"phi_a1": 0, ..., "dw_frac": 0.15}}, ...],
 //     "theta_i_max_deg": 75, "theta_o_max_deg": 75, "theta_i_points": 9, "phi_i_points": 7,
-//     "theta_o_points": 33, "phi_o_points": 49, "quadrature_panel_deg": 2 }
+//     "theta_o_points": 33, "phi_o_points": 49, "quadrature_panel_deg": 2, "brdf": false }
 #include "generators/filip.hpp"
 
 #include <cmath>
@@ -104,6 +105,7 @@ Config read_config(const nlohmann::json& entry) {
   c.theta_o_points = static_cast<int>(r.integer("theta_o_points", c.theta_o_points, 3, 2000));
   c.phi_o_points = static_cast<int>(r.integer("phi_o_points", c.phi_o_points, 3, 4000));
   c.quadrature_panel_deg = r.number("quadrature_panel_deg", c.quadrature_panel_deg, 0.01, 10.0);
+  c.brdf = r.boolean("brdf", c.brdf);
   r.finish();
   return c;
 }
@@ -124,7 +126,8 @@ nlohmann::json to_json(const Config& c) {
           {"phi_i_points", c.phi_i_points},
           {"theta_o_points", c.theta_o_points},
           {"phi_o_points", c.phi_o_points},
-          {"quadrature_panel_deg", c.quadrature_panel_deg}};
+          {"quadrature_panel_deg", c.quadrature_panel_deg},
+          {"brdf", c.brdf}};
 }
 
 namespace {
@@ -165,7 +168,7 @@ std::vector<BuiltTable> build(const Config& c, const GenerateContext& ctx) {
   for (const Material& m : c.materials) {
     const FilipParams p = m.params;
     const std::string q = "' (" + parameters_text(p) + ")";
-    {
+    if (c.brdf) {
       TableSpec spec = base_spec(std::string(sc::kBrdf.name) + m.name, std::string(sc::kBrdf.quantity) + m.name + q, c);
       spec.axes = {ax_ti, ax_pi, ax_to, ax_po};
       spec.storage = lookup::Storage::float32;
@@ -267,6 +270,7 @@ Config test_config() {
   c.theta_i_points = 3, c.phi_i_points = 3, c.theta_o_points = 7, c.phi_o_points = 13;
   c.quadrature_panel_deg = 6;
   c.error_rows = 64, c.error_per_row = 8;
+  c.brdf = true;  // every table kind of the family
   return c;
 }
 

@@ -1,6 +1,7 @@
 // Scene hook of filip: for each material of model "filip" (the 21 parameters of
-// numerics/filip_stencil_model.hpp) its f table and the sampling tables (albedo, marginal and
-// conditional CDFs per incident direction), as the manifest's "materials" list builds them.
+// numerics/filip_stencil_model.hpp) its sampling tables (albedo, marginal and conditional CDFs per
+// incident direction), as the manifest's "materials" list builds them; no f table (Config::brdf:
+// f comes from the closed form).
 // The family has no table over the material parameters: slices always.
 #include "generators/filip.hpp"
 #include "lookup/filip_schema.hpp"
@@ -11,8 +12,7 @@ std::optional<SceneConfig<Config>> from_scene(const std::vector<SceneMaterial>& 
   namespace sc = schema::filip;
   return per_material_scene<Config>(
       "filip", "filip", sc::kFile,
-      {{"filip_brdf", &sc::kBrdf},
-       {"filip_albedo", &sc::kAlbedo},
+      {{"filip_albedo", &sc::kAlbedo},
        {"filip_marginal_cdf", &sc::kMarginal},
        {"filip_conditional_cdf", &sc::kConditional}},
       all, policy, &build, [](const SceneMaterial& m) {

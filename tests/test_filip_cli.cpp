@@ -1,11 +1,12 @@
-// `brdftab eval filip_brdf` (exact and table with the committed tables/filip.h5) and its bad-input
-// errors, and the committed filip tables against the exact model.
+// `brdftab eval filip_brdf` (exact; table with an opt-in f table, "brdf": true, generated here:
+// the default set has none) and its bad-input errors, and the committed sampling tables.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <random>
 #include <sstream>
@@ -25,6 +26,19 @@ using brdftab::testing::run_cli;
 namespace {
 
 const fs::path kTables = fs::path(BRDFTAB_SOURCE_DIR) / "tables";
+
+// A small filip.h5 with the f tables of the two default materials ("brdf": true), generated once.
+const fs::path& opt_in_tables() {
+  static const fs::path dir = [] {
+    const fs::path d = brdftab::testing::scratch_dir("filip_opt_in");
+    std::ofstream(d / "m.json") << R"({"schema_version": 1, "tables": {"filip": {"brdf": true, "theta_i_points": 5,
+        "phi_i_points": 4, "theta_o_points": 13, "phi_o_points": 25, "quadrature_panel_deg": 6}}})";
+    const auto r = run_cli("generate -q --manifest '" + (d / "m.json").string() + "' --tables '" + (d / "t").string() + "'");
+    REQUIRE_MESSAGE(r.status == 0, r.err);
+    return d / "t";
+  }();
+  return dir;
+}
 
 std::string header() {
   std::string h = "theta_i,phi_i,theta_o,phi_o";
@@ -55,9 +69,9 @@ TEST_CASE("filip eval: exact equals the numerics, table within the stored error 
   REQUIRE(r.status == 0);
   CHECK(last_value(r.out, 1) == numerics::filip_brdf(p, 0.3, 0.4, 0.5, 3.5));
   CHECK(last_value(r.out, 2) == numerics::filip_brdf(p, 1.2, -2, 0.1, 6));
-  const auto loaded = lookup::load_table(kTables / "filip.h5", "filip_brdf_fabric");
+  const auto loaded = lookup::load_table(opt_in_tables() / "filip.h5", "filip_brdf_fabric");
   const double stated = loaded.info.attribute_number("max_abs_error", 0);
-  r = run_cli("eval filip_brdf --method table --tables '" + kTables.string() + "'", in);
+  r = run_cli("eval filip_brdf --method table --tables '" + opt_in_tables().string() + "'", in);
   REQUIRE(r.status == 0);
   // the table stores g = ln(f + 1e-10): its stated error bounds |ln f_table - ln f| (relative error)
   CHECK(std::abs(std::log(last_value(r.out, 1) / numerics::filip_brdf(p, 0.3, 0.4, 0.5, 3.5))) <= stated);
@@ -84,26 +98,33 @@ TEST_CASE("filip eval: bad input exits 2 naming row, column, value and domain") 
   CHECK(r.status == 2);
   CHECK(contains(r.err, "row 1"));
   CHECK(contains(r.err, "a2 + b2 = -0.85"));
+  // the default tables have no f table: the error says how to get one
+  r = run_cli("eval filip_brdf --method table --tables '" + kTables.string() + "'", header() + row(0.3, 0.4, 0.5, 3.5, p));
+  CHECK(r.status == 2);
+  CHECK(contains(r.err, "has no f table"));
+  CHECK(contains(r.err, "\"brdf\": true"));
+  CHECK(contains(r.err, "--method exact"));
   // a parameter set with no table
   q = p;
   q.r = 0.31;
-  r = run_cli("eval filip_brdf --method table --tables '" + kTables.string() + "'", header() + row(0.3, 0.4, 0.5, 3.5, q));
+  r = run_cli("eval filip_brdf --method table --tables '" + opt_in_tables().string() + "'", header() + row(0.3, 0.4, 0.5, 3.5, q));
   CHECK(r.status == 2);
   CHECK(contains(r.err, "no table in filip.h5 has these parameters"));
   CHECK(contains(r.err, "filip_brdf_fabric"));
   // beyond the table's theta range
-  r = run_cli("eval filip_brdf --method table --tables '" + kTables.string() + "'", header() + row(0.3, 0.4, 1.5, 3.5, p));
+  r = run_cli("eval filip_brdf --method table --tables '" + opt_in_tables().string() + "'", header() + row(0.3, 0.4, 1.5, 3.5, p));
   CHECK(r.status == 2);
   CHECK(contains(r.err, "theta_o"));
 }
 
 TEST_CASE("filip tables: the committed CDF tables sample the committed materials consistently") {
+  const auto names = lookup::list_tables(kTables / "filip.h5");
+  CHECK(std::none_of(names.begin(), names.end(), [](const std::string& n) { return n.rfind("filip_brdf_", 0) == 0; }));
   for (const std::string mat : {"fabric", "brushed"}) {
     const auto m = lookup::load_table(kTables / "filip.h5", "filip_marginal_cdf_" + mat);
     const auto c = lookup::load_table(kTables / "filip.h5", "filip_conditional_cdf_" + mat);
-    const auto f = lookup::load_table(kTables / "filip.h5", "filip_brdf_" + mat);
-    const auto p = gen::filip::parse_parameters_text(f.info.attribute_string("filip_parameters"));
-    CHECK(gen::filip::parameters_text(p) == f.info.attribute_string("filip_parameters"));
+    const auto p = gen::filip::parse_parameters_text(m.info.attribute_string("filip_parameters"));
+    CHECK(gen::filip::parameters_text(p) == m.info.attribute_string("filip_parameters"));
     const lookup::FilipSampler s(m.table, c.table);
     std::mt19937_64 rng(8);
     std::uniform_real_distribution<double> u(0.0, 1.0);

@@ -40,6 +40,7 @@ const Built& built() {
     c.theta_i_points = 5, c.phi_i_points = 5, c.theta_o_points = 13, c.phi_o_points = 25;
     c.quadrature_panel_deg = 2.5;
     c.error_rows = 8, c.error_per_row = 8;
+    c.brdf = true;  // the opt-in f table too (tables[0])
     gen::GenerateContext ctx;
     x.tables = gen::filip::build(c, ctx);
     return x;

@@ -1,5 +1,6 @@
-// `brdftab bench` group of the filip family: the exact model, the tabulated f, sampling and pdf
-// from the CDF tables (material "fabric" of tables/filip.h5), names prefixed filip/.
+// `brdftab bench` group of the filip family: the exact model, the tabulated f (the f table of
+// tables/filip.h5 when it has one, else the default grid built here: f tables are opt-in),
+// sampling and pdf from the CDF tables (material "fabric" of tables/filip.h5), names prefixed filip/.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "generators/filip.hpp"
 #include "lookup/filip.hpp"
 #include "lookup/table_file.hpp"
 #include "numerics/filip_stencil_model.hpp"
@@ -36,10 +38,18 @@ void register_benchmarks(const BenchContext& ctx) {
     per_call(state, pts->size() / 4);
   });
   const auto file = ctx.tables_dir / sc::kFile;
+  std::shared_ptr<lookup::Table> f;
   try {
-    auto f = std::make_shared<lookup::LoadedTable>(lookup::load_table(file, std::string(sc::kBrdf.name) + "fabric"));
-    benchmark::RegisterBenchmark("filip/table/filip_brdf", [pts, params, f](benchmark::State& state) {
-      const lookup::FilipBrdfTable t(f->table);
+    f = std::make_shared<lookup::Table>(lookup::load_table(file, std::string(sc::kBrdf.name) + "fabric").table);
+  } catch (const std::exception&) {  // no f table in the file (the default set): the default grid, built here
+    gen::filip::Config c;
+    c.materials.resize(1);  // fabric
+    c.brdf = true;
+    c.quadrature_panel_deg = 45, c.error_rows = 4, c.error_per_row = 4;  // the sampling tables are not timed here
+    f = std::make_shared<lookup::Table>(std::move(gen::filip::build(c, {}).at(0).dataset.table));
+  }
+  benchmark::RegisterBenchmark("filip/table/filip_brdf", [pts, params, f](benchmark::State& state) {
+      const lookup::FilipBrdfTable t(*f);
       for (auto _ : state)
         for (std::size_t i = 0; i < pts->size(); i += 4)
           benchmark::DoNotOptimize(lookup::filip_brdf(t, (*pts)[i], (*pts)[i + 1], (*pts)[i + 2], (*pts)[i + 3]));
@@ -52,6 +62,7 @@ void register_benchmarks(const BenchContext& ctx) {
       per_call(state, pts->size() / 4);
       state.counters["max_rel_err"] = err;
     });
+  try {
     auto m = std::make_shared<lookup::LoadedTable>(lookup::load_table(file, std::string(sc::kMarginal.name) + "fabric"));
     auto c =
         std::make_shared<lookup::LoadedTable>(lookup::load_table(file, std::string(sc::kConditional.name) + "fabric"));

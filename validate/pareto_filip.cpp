@@ -5,7 +5,8 @@
 //  - printed: the same with the support mask as printed (validate/ERRATA.md: 1 away from the
 //    highlight, 0 on it);
 //  - the per-material 4-D tables of ln(f + 1e-10) looked up by lookup::filip_brdf (as
-//    `eval filip_brdf --method table`): the committed tables of --tables (9x7x33x49, float32
+//    `eval filip_brdf --method table`): the f tables of --tables when it has them (opt-in,
+//    "brdf": true; the default set has none) (9x7x33x49, float32
 //    multilinear) and their every-2nd-node copies (pareto::subsampled: the tables the generator
 //    builds at twice the step), and tables built here by the generator at twice the default
 //    points on every axis (17x13x65x97); linear and cubic, float32 and float64. The generator
@@ -51,6 +52,7 @@ struct Resolution {
 Resolution built(const gen::filip::Config& base, int ti, int pi, int to, int po) {
   gen::filip::Config c = base;
   c.theta_i_points = ti, c.phi_i_points = pi, c.theta_o_points = to, c.phi_o_points = po;
+  c.brdf = true;  // the opt-in f tables
   c.quadrature_panel_deg = 45;  // the CDF and albedo tables are not measured here: coarse panels
   c.error_rows = 4, c.error_per_row = 4;
   Resolution r{"built here", {}};

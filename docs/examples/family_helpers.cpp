@@ -33,11 +33,10 @@ int main() {
   const lk::HpAlbedoParts a_hp = nickel(0.3);  // reflection, diffraction, layer, total()
   const lk::HtsgDistributionTable d(tables.table("htsg.h5", "htsg_log_distribution"));
   const double dhat = htsg_distribution(d, 1.0, 2.0);  // g, X
-  const lk::FilipBrdfTable fb(tables.table("filip.h5", "filip_brdf_fabric"));
-  const double f_filip = filip_brdf(fb, 0.3, 0.0, 0.4, 3.0);  // theta_i, phi_i, theta_o, phi_o
+  // Filip et al.: f from the closed form (numerics::filip_brdf); the tables sample it
   const lk::FilipSampler s(tables.table("filip.h5", "filip_marginal_cdf_fabric"),
                            tables.table("filip.h5", "filip_conditional_cdf_fabric"));
   const lk::FilipSample smp = s.sample(0.3, 0.0, 0.1, 0.5, 0.7, 0.2);  // theta_o, phi_o, pdf (1/sr)
-  std::printf("F_dr %.6f sigma %.6f H0 %.6f G1 %.6f k_d %.6f c %.6f haze %.6f hp %.6f D %.6g f %.6g pdf %.6g\n",
-              f_dr, sigma, h0, G1, k, c, a_haze, a_hp.total(), dhat, f_filip, smp.pdf);
+  std::printf("F_dr %.6f sigma %.6f H0 %.6f G1 %.6f k_d %.6f c %.6f haze %.6f hp %.6f D %.6g pdf %.6g\n",
+              f_dr, sigma, h0, G1, k, c, a_haze, a_hp.total(), dhat, smp.pdf);
 }

@@ -15,6 +15,6 @@ int main() {
   double a_layer = varnish.table("hp_albedo_layer").eval1(mu);
   const auto& haze = scene.material("haze");          // model "hazy_gloss"
   double a_haze = haze.table("hazy_albedo_ggx_patch").eval1(mu);
-  // filip: "filip_brdf", "filip_albedo", "filip_marginal_cdf", "filip_conditional_cdf"
+  // filip: "filip_albedo", "filip_marginal_cdf", "filip_conditional_cdf"
   return g1 + s2 + fdr + kd + c + a + h1 + a_layer + a_haze > 0 ? 0 : 1;
 }

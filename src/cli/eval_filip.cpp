@@ -39,6 +39,11 @@ std::string dataset_for(const EvalContext& ctx, const numerics::FilipParams& p) 
         m[ctx.tables->get(file, name).info.attribute_string("filip_parameters")] = name;
     it = by_dir.emplace(dir, std::move(m)).first;
   }
+  if (it->second.empty())
+    throw std::domain_error(std::string(schema::filip::kFile) + " in " + dir +
+                            " has no f table (the default set ships the sampling tables only: a multilinear f table "
+                            "misses the highlights by up to ~2x; generate one with \"brdf\": true in the manifest's "
+                            "filip entry, or use --method exact)");
   const auto found = it->second.find(gen::filip::parameters_text(p));
   if (found == it->second.end()) {
     std::string names;

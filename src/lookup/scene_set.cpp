@@ -152,7 +152,6 @@ const schema::DatasetSchema* composite_role_schema(const std::string& role) {
       {"hp_albedo_reflection", &schema::hp::kReflection},
       {"hp_albedo_diffraction", &schema::hp::kDiffraction},
       {"hp_albedo_layer", &schema::hp::kLayer},
-      {"filip_brdf", &fp::kBrdf},
       {"filip_albedo", &fp::kAlbedo},
       {"filip_marginal_cdf", &fp::kMarginal},
       {"filip_conditional_cdf", &fp::kConditional}};
