@@ -371,6 +371,7 @@ std::vector<unsigned char> slurp(const fs::path& p) {
 struct Figures {
   double max_rel = 0, median_rel = 0, p99_rel = 0, where_mu_i = 0, where_mu_o = 0, where_phi = 0;
   double max_rel_above_02 = 0;  // both cosines >= 0.2 (theta <= 78.5 degrees)
+  double zero_share = 0, zero_share_above_02 = 0;  // share of the points where the file reads f = 0
 };
 
 // f from the file against `exact` at random directions with f above `floor` of the largest f
@@ -398,7 +399,12 @@ Figures compare_f(const Measured& file, const std::function<double(const V3&, co
     es.push_back(p.e);
     if (p.mi >= 0.2 && p.mo >= 0.2) r.max_rel_above_02 = std::max(r.max_rel_above_02, p.e);
     if (p.e > r.max_rel) r.max_rel = p.e, r.where_mu_i = p.mi, r.where_mu_o = p.mo, r.where_phi = p.phi;
+    if (p.e == 1) {
+      r.zero_share += 1;
+      if (p.mi >= 0.2 && p.mo >= 0.2) r.zero_share_above_02 += 1;
+    }
   }
+  r.zero_share /= double(es.size()), r.zero_share_above_02 /= double(es.size());
   std::sort(es.begin(), es.end());
   r.median_rel = es[es.size() / 2];
   r.p99_rel = es[es.size() * 99 / 100];
@@ -490,7 +496,9 @@ ModelFigures measure_model(const std::string& model, const std::string& params,
   MESSAGE("rgl " << model << " (" << m.bytes << " bytes): f where >= " << floor << " of its peak (" << n_f
                  << " random directions): median rel. error " << m.f.median_rel << ", 99th pct " << m.f.p99_rel
                  << ", max with both mu >= 0.2 " << m.f.max_rel_above_02 << ", max " << m.f.max_rel
-                 << " at mu_i = " << m.f.where_mu_i << ", mu_o = " << m.f.where_mu_o << ", phi = " << m.f.where_phi);
+                 << " at mu_i = " << m.f.where_mu_i << ", mu_o = " << m.f.where_mu_o << ", phi = " << m.f.where_phi
+                 << "; the file reads 0 at " << m.f.zero_share << " of the points (" << m.f.zero_share_above_02
+                 << " with both mu >= 0.2)");
   for (double mo : mus) {
     ModelFigures::At a;
     const V3 wo = dir(mo, 0.4);
