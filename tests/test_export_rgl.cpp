@@ -4,7 +4,10 @@
 // no code with the writer, and compared with BRDFs computed here independently:
 //   - GGX with the height-correlated Smith masking (Heitz 2014 Eq. 99, GGX D and Lambda in
 //     closed form, written out below), through `--model ggx`;
-//   - a per-material Lambertian-sphere table, against a finer half-space solve (d'Eon).
+//   - a per-material Lambertian-sphere table, against a finer half-space solve (d'Eon);
+//   - hazy_gloss, hp and li_torrance of the audit registry, against the models' own numerics
+//     (numerics::hazy_gloss_brdf, numerics::HpBrdf, numerics::li_torrance_brdf);
+//   - filip (anisotropic), which the writer refuses.
 // Figures: f at random directions (max and median relative error and where), the directional
 // albedo from the file against the exact albedo, and the file's sampling density against its
 // own f cos theta / albedo, plus the Monte Carlo albedo through the file's sampling routine.
