@@ -4,7 +4,10 @@
 // no code with the writer, and compared with BRDFs computed here independently:
 //   - GGX with the height-correlated Smith masking (Heitz 2014 Eq. 99, GGX D and Lambda in
 //     closed form, written out below), through `--model ggx`;
-//   - a per-material Lambertian-sphere table, against a finer half-space solve (d'Eon).
+//   - a per-material Lambertian-sphere table, against a finer half-space solve (d'Eon);
+//   - hazy_gloss, hp and li_torrance of the audit registry, against the models' own numerics
+//     (numerics::hazy_gloss_brdf, numerics::HpBrdf, numerics::li_torrance_brdf);
+//   - filip (anisotropic), which the writer refuses.
 // Figures: f at random directions (max and median relative error and where), the directional
 // albedo from the file against the exact albedo, and the file's sampling density against its
 // own f cos theta / albedo, plus the Monte Carlo albedo through the file's sampling routine.
@@ -29,6 +32,10 @@
 #include "generators/ls_brdf.hpp"
 #include "lookup/ls_schema.hpp"
 #include "generators/table_builder.hpp"
+#include "cli/export_rgl.hpp"
+#include "numerics/hazy_gloss_albedo.hpp"
+#include "numerics/hp_brdf.hpp"
+#include "numerics/li_torrance_brdf.hpp"
 #include "numerics/ls_half_space.hpp"
 
 using namespace brdftab;
@@ -367,6 +374,7 @@ std::vector<unsigned char> slurp(const fs::path& p) {
 struct Figures {
   double max_rel = 0, median_rel = 0, p99_rel = 0, where_mu_i = 0, where_mu_o = 0, where_phi = 0;
   double max_rel_above_02 = 0;  // both cosines >= 0.2 (theta <= 78.5 degrees)
+  double zero_share = 0, zero_share_above_02 = 0;  // share of the points where the file reads f = 0
 };
 
 // f from the file against `exact` at random directions with f above `floor` of the largest f
@@ -394,7 +402,12 @@ Figures compare_f(const Measured& file, const std::function<double(const V3&, co
     es.push_back(p.e);
     if (p.mi >= 0.2 && p.mo >= 0.2) r.max_rel_above_02 = std::max(r.max_rel_above_02, p.e);
     if (p.e > r.max_rel) r.max_rel = p.e, r.where_mu_i = p.mi, r.where_mu_o = p.mo, r.where_phi = p.phi;
+    if (p.e == 1) {
+      r.zero_share += 1;
+      if (p.mi >= 0.2 && p.mo >= 0.2) r.zero_share_above_02 += 1;
+    }
   }
+  r.zero_share /= double(es.size()), r.zero_share_above_02 /= double(es.size());
   std::sort(es.begin(), es.end());
   r.median_rel = es[es.size() / 2];
   r.p99_rel = es[es.size() * 99 / 100];
@@ -420,7 +433,7 @@ struct SamplingFigures {
   double pdf_integral = 0, ratio_median = 0, ratio_p90 = 0, mc_albedo = 0, mc_stderr = 0, quad_albedo = 0,
          worst_pdf_mismatch = 0, below_horizon = 0;
 };
-SamplingFigures sampling(const Measured& file, const V3& wo, unsigned seed) {
+SamplingFigures sampling(const Measured& file, const V3& wo, unsigned seed, int n = 20000) {
   SamplingFigures r;
   r.pdf_integral = albedo([&](const V3& a, const V3& b) { return file.pdf(a, b) / b[2]; }, wo, 96, 192);
   r.quad_albedo = albedo([&](const V3& a, const V3& b) { return file.f(a, b); }, wo, 96, 192);
@@ -428,7 +441,6 @@ SamplingFigures sampling(const Measured& file, const V3& wo, unsigned seed) {
   auto u01 = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
   std::vector<double> ratios;
   double s = 0, s2 = 0;
-  const int n = 20000;
   for (int q = 0; q < n; ++q) {
     const auto smp = file.sample(wo, u01(), u01());
     double v = 0;
@@ -454,6 +466,103 @@ SamplingFigures sampling(const Measured& file, const V3& wo, unsigned seed) {
   r.ratio_p90 = d[d.size() * 9 / 10];
   return r;
 }
+
+
+// One model of the audit registry through `export --format rgl --model MODEL --params PARAMS`
+// and the reader, against `exact(wo, wi)`: the model's own numerics, wo the viewer direction
+// (the file's slice parameter, the readers' wo) and wi the light, i.e. the model's
+// f(omega_i = wi, omega_o = wo), which matters for the non-reciprocal models. Figures: f at
+// n_f random directions where f >= `floor` of its peak, the albedo from the file (quadrature
+// of the file's f) against a quadrature of `exact` (exact_n x 2 exact_m nodes) at each mu_o,
+// and the sampling checks (n_samples through Sample_f). Prints the lines docs/exports.md quotes.
+struct ModelFigures {
+  std::size_t bytes = 0;
+  Figures f;
+  struct At {
+    double mu_o = 0, a_file = 0, a_exact = 0;
+    SamplingFigures s;
+  };
+  std::vector<At> at;
+};
+ModelFigures measure_model(const std::string& model, const std::string& params,
+                           const std::function<double(const V3&, const V3&)>& exact, int n_f, double floor,
+                           const std::vector<double>& mus, int exact_n, int exact_m, int n_samples, unsigned seed) {
+  const fs::path d = testing::scratch_dir("export_rgl_" + model);
+  const auto r = testing::run_cli("export --format rgl --model " + model + " --params " + params + " --out '" +
+                                  d.string() + "'");
+  REQUIRE_MESSAGE(r.status == 0, r.err);
+  const auto bytes = slurp(d / (model + ".rgl.bsdf"));
+  const Measured file(bytes);
+  ModelFigures m;
+  m.bytes = bytes.size();
+  m.f = compare_f(file, exact, seed, n_f, floor);
+  MESSAGE("rgl " << model << " (" << m.bytes << " bytes): f where >= " << floor << " of its peak (" << n_f
+                 << " random directions): median rel. error " << m.f.median_rel << ", 99th pct " << m.f.p99_rel
+                 << ", max with both mu >= 0.2 " << m.f.max_rel_above_02 << ", max " << m.f.max_rel
+                 << " at mu_i = " << m.f.where_mu_i << ", mu_o = " << m.f.where_mu_o << ", phi = " << m.f.where_phi
+                 << "; the file reads 0 at " << m.f.zero_share << " of the points (" << m.f.zero_share_above_02
+                 << " with both mu >= 0.2)");
+  for (double mo : mus) {
+    ModelFigures::At a;
+    const V3 wo = dir(mo, 0.4);
+    a.mu_o = mo;
+    a.a_file = albedo([&](const V3& x, const V3& y) { return file.f(x, y); }, wo, 96, 192);
+    a.a_exact = albedo(exact, wo, exact_n, exact_m);
+    a.s = sampling(file, wo, seed + 4, n_samples);
+    MESSAGE("rgl " << model << " albedo at mu_o = " << mo << ": file " << a.a_file << ", exact " << a.a_exact << " ("
+                   << 100 * (a.a_file / a.a_exact - 1) << "%)");
+    MESSAGE("rgl " << model << " sampling at mu_o = " << mo << ": int pdf = " << a.s.pdf_integral
+                   << ", |pdf / (f cos / A) - 1| median " << a.s.ratio_median << ", 90th pct " << a.s.ratio_p90
+                   << ", MC albedo " << a.s.mc_albedo << " +- " << a.s.mc_stderr << " (" << n_samples
+                   << " samples) vs quadrature " << a.s.quad_albedo << ", Sample_f pdf vs PDF "
+                   << a.s.worst_pdf_mismatch << ", below the horizon " << a.s.below_horizon);
+    m.at.push_back(a);
+  }
+  return m;
+}
+
+// The bounds every model's file meets (the same as GGX's): the file's PDF integrates to 1 less
+// the share the VNDF sends below the horizon (1%), the Monte Carlo albedo through Sample_f
+// agrees with the quadrature of the file's own f (4 standard errors + 0.1%), Sample_f's pdf is
+// PDF's (1e-3); the median f error and the albedo error against the exact model are the
+// caller's (set from the model's lobe and the file's resolution).
+void check_model(const ModelFigures& m, double median_tolerance, double albedo_tolerance) {
+  CHECK(m.f.median_rel <= median_tolerance);
+  for (const auto& a : m.at) {
+    INFO("mu_o = " << a.mu_o);
+    CHECK(std::abs(a.a_file - a.a_exact) <= albedo_tolerance * a.a_exact);
+    CHECK(std::abs(a.s.pdf_integral - (1 - a.s.below_horizon)) <= 1e-2);
+    CHECK(std::abs(a.s.mc_albedo - a.s.quad_albedo) <= 4 * a.s.mc_stderr + 1e-3 * a.s.quad_albedo);
+    CHECK(a.s.worst_pdf_mismatch <= 1e-3);
+  }
+}
+
+// Relative azimuth phi_o - phi_i in [0, 2 pi] and the polar angle, for the models written in
+// (theta_i, theta_o, phi) (HP, Li-Torrance: phi = pi is the mirror direction).
+double rel_azimuth(const V3& wo, const V3& wi) {
+  double phi = std::atan2(wo[1], wo[0]) - std::atan2(wi[1], wi[0]);
+  phi -= 2 * kPi * std::floor(phi / (2 * kPi));
+  return std::clamp(phi, 0.0, 2 * kPi);
+}
+double polar(const V3& w) { return std::atan2(std::hypot(w[0], w[1]), w[2]); }
+
+// HP's exact ingredients with G1 memoized by argument (~10 us each, exact Smith) and the
+// per-incidence constants of the last theta_i kept: the quadratures hold wo fixed and run
+// rings of fixed theta_i.
+class HpMemoG1 final : public numerics::HpIngredients {
+ public:
+  explicit HpMemoG1(const numerics::HpMaterial& m) : exact_(m) {}
+  double g1(double mu) const override {
+    const auto it = g1_.find(mu);
+    return it != g1_.end() ? it->second : (g1_[mu] = exact_.g1(mu));
+  }
+  double sigma_rel2(double s) const override { return exact_.sigma_rel2(s); }
+  double fresnel_dr(double eta) const override { return exact_.fresnel_dr(eta); }
+
+ private:
+  numerics::HpExactIngredients exact_;
+  mutable std::map<double, double> g1_;
+};
 
 }  // namespace
 
@@ -561,4 +670,90 @@ TEST_CASE("export --format rgl --model: a parameter outside its domain exits 2 n
   CHECK(r.err.find("alpha") != std::string::npos);
   CHECK(r.err.find("20") != std::string::npos);
   CHECK(r.err.find("[1e-3, 10]") != std::string::npos);
+}
+
+TEST_CASE("export --format rgl --model hazy_gloss: the hazy-gloss composite through the pbrt-v4-rule reader") {
+  // The registry's default material (a rough metal: alpha_n = 0.2, alpha_w = 0.4, GGX lobes,
+  // large-patch masking, the haze mapping's exact Fresnel), f from numerics::hazy_gloss_brdf.
+  const numerics::HazyGlossMaterial mat{0.5, 0.5, 0.2, 0.3, 1.0, false};
+  const numerics::HazyGlossComposite c = numerics::hazy_gloss_composite(mat, numerics::NdfKind::ggx);
+  auto exact = [&](const V3& wo, const V3& wi) {
+    return numerics::hazy_gloss_brdf(c, {wi[0], wi[1], wi[2]}, {wo[0], wo[1], wo[2]}, false);
+  };
+  const ModelFigures m = measure_model("hazy_gloss", "r_c=0.5,g=0.5,alpha_n=0.2,beta_h=0.3,lambda_h=1", exact, 4000,
+                                       1e-3, {1.0, 0.6, 0.3}, 192, 192, 10000, 21);
+  for (const auto& a : m.at) {  // the quadrature of exact f against the model's own albedo
+    const double own = numerics::hazy_gloss_albedo(mat, numerics::NdfKind::ggx, false, a.mu_o);
+    MESSAGE("rgl hazy_gloss albedo at mu_o = " << a.mu_o << ": numerics::hazy_gloss_albedo " << own);
+    CHECK(std::abs(a.a_exact - own) <= 1e-4 * own);
+  }
+  check_model(m, 1e-2, 1e-2);
+}
+
+TEST_CASE("export --format rgl --model hp: the Holzschuch-Pacanowski metal (reflection + diffraction) through the pbrt-v4-rule reader") {
+  // The registry's default single-layer material: lambda 0.526 um, sigma_s 0.1 um (a diffraction
+  // lobe: not reciprocal), beta 0.3, p 1, b 5 um, c 2, eta 0.47 + 2.4 i; f from numerics::HpBrdf
+  // with the exact ingredients, omega_i = the light (wi), omega_o = the viewer (wo).
+  numerics::HpMaterial mat;
+  mat.lambda_um = 0.526, mat.sigma_s_um = 0.1, mat.beta = 0.3, mat.p = 1, mat.b_um = 5, mat.c = 2, mat.n = 0.47,
+  mat.k = 2.4;
+  const HpMemoG1 ing(mat);
+  const numerics::HpBrdf brdf(mat, ing);
+  double last_theta_i = -1;
+  numerics::HpIncident in{};
+  auto exact = [&](const V3& wo, const V3& wi) {
+    const double theta_i = polar(wi);
+    if (theta_i != last_theta_i) in = brdf.incident(theta_i), last_theta_i = theta_i;
+    const double phi = rel_azimuth(wo, wi), so = std::hypot(wo[0], wo[1]);
+    return brdf.eval(in, {so * std::cos(phi), so * std::sin(phi), wo[2]}).total();
+  };
+  const ModelFigures m = measure_model("hp", "lambda_um=0.526,sigma_s_um=0.1,beta=0.3,p=1,b_um=5,c=2,n=0.47,k=2.4",
+                                       exact, 4000, 1e-3, {1.0, 0.6, 0.3}, 192, 192, 10000, 23);
+  check_model(m, 1e-2, 1e-2);
+}
+
+TEST_CASE("export --format rgl --model li_torrance: the Li-Torrance paint (fitted pieces) through the pbrt-v4-rule reader") {
+  // The registry's default: the paper's sample #13 (garnet red paint, G channel): sigma 0.7,
+  // tau 8.2, lambda 0.55 um, f0 0.0672, k_dd 0.72, k_fs 1 (the forward-scattering term: not
+  // reciprocal); f from numerics::li_torrance_brdf, theta_i the light's. The mirror delta of
+  // Eq. 3 (rho_spec) is not in f, so not in the file: the albedos here are f's.
+  const numerics::LiTorranceParams lp{0.7, 8.2, 0.55, 0.0672, 0.72, 0, 0, 1.0};
+  auto exact = [&](const V3& wo, const V3& wi) {
+    return numerics::li_torrance_brdf(lp, polar(wi), polar(wo), rel_azimuth(wo, wi), numerics::LiTorrancePieces::fit).f;
+  };
+  const ModelFigures m = measure_model("li_torrance", "sigma=0.7,tau=8.2,lambda=0.55,f0=0.0672,k_dd=0.72,k_udf=0,k_uds=0,k_fs=1",
+                                       exact, 4000, 1e-3, {1.0, 0.6, 0.3}, 192, 192, 10000, 25);
+  for (const auto& a : m.at)
+    MESSAGE("rgl li_torrance mirror delta (not in the file) at mu_o = "
+            << a.mu_o << ": rho_spec = "
+            << numerics::li_torrance_brdf(lp, std::acos(a.mu_o), std::acos(a.mu_o), kPi, numerics::LiTorrancePieces::fit).rho_spec);
+  check_model(m, 1e-2, 1e-2);
+}
+
+TEST_CASE("export --format rgl --model filip: an anisotropic BRDF is refused, naming the rotation that changes f") {
+  // Filip et al.'s stencils have axes fixed in the surface (phi_a): f changes when both
+  // directions rotate about the normal, which one phi_i slice cannot hold (the readers would
+  // turn the phi_o = 0 slice with the viewer).
+  const fs::path d = testing::scratch_dir("export_rgl_filip");
+  const auto r = testing::run_cli("export --format rgl --model filip --out '" + d.string() + "'");
+  CHECK(r.status == 1);
+  CHECK(r.err.find("anisotropic") != std::string::npos);
+  CHECK(r.err.find("rotate by") != std::string::npos);
+  CHECK(r.err.find("phi_i") != std::string::npos);
+  CHECK_FALSE(fs::exists(d / "filip.rgl.bsdf"));
+  MESSAGE("rgl filip: " << r.err);
+  // The writer itself, on an anisotropic GGX (alpha_x = 0.2, alpha_y = 0.4) and on the isotropic one.
+  auto aniso_ggx = [](double ax, double ay) {
+    return [ax, ay](const numerics::AuditVec& wi, const numerics::AuditVec& wo) {
+      const double hx = wi.x + wo.x, hy = wi.y + wo.y, hz = wi.z + wo.z;
+      const double d = 1 / (kPi * ax * ay * std::pow(hx * hx / (ax * ax * hz * hz) + hy * hy / (ay * ay * hz * hz) + 1, 2) *
+                            std::pow(hz / std::sqrt(hx * hx + hy * hy + hz * hz), 4));
+      return d / (4 * wi.z * wo.z);  // no masking: enough to tell the azimuths apart
+    };
+  };
+  cli::RglOptions o;
+  o.n_theta = 2, o.res = 4, o.ndf_res = 8, o.vndf_res = 4, o.ndf_iterations = 1;
+  CHECK_THROWS_WITH_AS(cli::rgl_tensor_bsdf(aniso_ggx(0.2, 0.4), o), doctest::Contains("anisotropic"),
+                       std::invalid_argument);
+  CHECK_NOTHROW(cli::rgl_tensor_bsdf(aniso_ggx(0.3, 0.3), o));
 }

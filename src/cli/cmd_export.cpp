@@ -16,7 +16,9 @@
 //           layer-laboratory Fourier BSDF for pbrt-v3 / Mitsuba 0.6 (cli/export_pbrt_fourier.hpp).
 //   rgl     DIR/DATASET.rgl.bsdf (or DIR/MODEL.rgl.bsdf with --model MODEL [--params ...], a
 //           model of the audit registry): an RGL tensor file (Dupuy & Jakob 2018) for pbrt-v4's
-//           `measured` material and Mitsuba 3's `measured` plugin (cli/export_rgl.hpp).
+//           `measured` material and Mitsuba 3's `measured` plugin (cli/export_rgl.hpp); an
+//           isotropic BRDF only: an anisotropic one (filip) exits 1 naming the rotation that
+//           changes f.
 // The numbers are written in shortest round-trip form (%.17g / %.9g), so they read back
 // as the same doubles / floats.
 #include <algorithm>

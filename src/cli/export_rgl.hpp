@@ -12,7 +12,7 @@
 //   description  uint8[n]                    the source, in words
 //   jacobian     uint8[1] = 1                the spectra below carry the 1 / D factor
 //   theta_i      float32[n_theta]            incident elevations (radians)
-//   phi_i        float32[1] = {0}            one azimuth: isotropic
+//   phi_i        float32[1] = {0}            one azimuth: isotropic (an anisotropic f is refused)
 //   wavelengths  float32[2] = {360, 830}     a grey BRDF: both slices equal
 //   ndf          float32[2][ndf_res]         D(theta_m), the microfacet distribution estimated
 //                                            from the retro-reflection (below), int D cos = 1
@@ -52,7 +52,10 @@ struct RglOptions {
   std::string description;
 };
 
-// The file's bytes. Throws std::invalid_argument (options, a non-finite or negative f).
+// The file's bytes. Throws std::invalid_argument (options, a non-finite or negative f, an
+// anisotropic f: one that changes when both directions rotate about the normal, which the
+// file's single phi_i slice cannot hold; the readers would turn its phi_o = 0 slice with the
+// viewer).
 std::vector<unsigned char> rgl_tensor_bsdf(const RglBrdf& f, const RglOptions& o = {});
 
 }  // namespace brdftab::cli
