@@ -7,20 +7,24 @@
 //   w(s) = log1p(K (1 - s)) / log1p(K),  K = w_scale B.
 //
 // At construction the material's slice is resampled from the 3-D double lookup
-// (lookup::ghs_sigma_rel2 on the grid) into a float32 1-D table of n nodes regular in the grid's
-// own coordinate w (default 8 per cell of the grid's w axis, the grid's w nodes among them:
-// 761 nodes, 3 KB), values sigma_rel^2 = R F(1). A lookup is lookup::render's 1-D cubic read
-// (render_grid.hpp read_cubic1, the FloatTable read) at w(s) computed in float:
-//   1 - s in double (no cancellation as s -> 1, the grazing layer of width ~1/B),
-//   w = log(1 + K (1 - s)) / log1p(K) in float (logf of 1 + y, not log1pf: logf is ~3x faster
-//   here and its absolute error ~6e-8 in w is what a grid coordinate needs; tested).
-// Error: the resampled float lookup against the 3-D double lookup at 16384 points of s (w
-// uniform, half of them pushed towards w = 0 or 1), 4 points in each cell next to every grid
-// w node (where the 3-D read's stencil changes and the slice has a derivative jump) and the
-// ends s = 0, 1 and 1e-3, 1e-1 of a resampled cell from them, doubled, is measured at
-// construction (FloatTable::float_evaluation_error); FloatTable::max_abs_error is the 3-D
-// table's stated error (attribute max_abs_error, on R) times F(1) (sigma_rel^2 = R F(1), F(1)
-// in closed form), so lookup_error() = that + the measured error.
+// (lookup::ghs_sigma_rel2 on the grid, through w(s) in double) into a float32 1-D table of n
+// nodes (default 2048, 8 KB) regular in v = (1 - s)^(1/4), values sigma_rel^2 = R F(1). A lookup
+// is 1 - s in double (no cancellation as s -> 1), two float square roots and the float 1-D
+// cubic read (render_grid.hpp read_cubic1f: lookup::Table's stencil, Lagrange weights in
+// float). v rather than the grid's own w: w costs a log per call (logf of 1 + K (1 - s), with
+// the read ~2x the square roots in the same loop, measured), and v also spreads the grazing
+// layer 1 - s ~ 1/B over the axis (B = 1000: 1 - s in [1e-4, 1e-2] is v in [0.1, 0.32]).
+// Resampling the 3-D interpolant (piecewise cubic in w, its first derivative jumping at the
+// grid's w nodes, which fall between the v nodes) converges like ~h^1.3: measured (doubled,
+// over the test's materials) 7.4e-6 at 512 nodes, 3.8e-6 at 1024, 1.5e-6 at 2048; 761 nodes on
+// w aligned with the grid's nodes gave 7.3e-7 (tests/test_render_ghs_ls.cpp prints the sweep).
+// Error: the resampled float lookup against the 3-D double lookup at 16384 points of s (half
+// uniform in v, half in the grid's w, half of each pushed towards an end), 4 points next to
+// every grid w node (1e-4 and 1e-3 of a grid cell each side) and the ends s = 0, 1 and 1e-3,
+// 1e-1 of a resampled cell from them, doubled, is measured at construction
+// (FloatTable::float_evaluation_error); FloatTable::max_abs_error is the 3-D table's stated
+// error (attribute max_abs_error, on R) times F(1) (sigma_rel^2 = R F(1), F(1) in closed form),
+// so lookup_error() = that + the measured error.
 //
 // Inputs: B and c are checked once against the grid's ranges (DomainError naming them); per
 // call s is not checked: it is clamped to [0, 1] (NaN reads as s = 1).
@@ -42,9 +46,9 @@
 namespace brdftab::lookup::render {
 
 struct GhsSigmaRel {
-  FloatTable table;  // 1-D on w in [0, 1] (identity axis), values sigma_rel^2
+  FloatTable table;  // 1-D on x = 1 - s, transform fourth_root (v = x^(1/4) in [0, 1]), values sigma_rel^2
   double B = 0, c = 0, K = 0, F1 = 0;
-  float Kf = 0, g_scale = 0;  // grid coordinate g = log(1 + K (1 - s)) * g_scale, g_scale = (n - 1) / log1p(K)
+  float g_scale = 0;  // grid coordinate g = v * (n - 1)
   double lookup_error() const { return table.lookup_error(); }
   std::size_t bytes() const { return table.bytes(); }
 };
@@ -53,11 +57,9 @@ namespace detail {
 // The grid coordinate of s (top of this file).
 inline float ghs_grid(const GhsSigmaRel& m, double s) {
   const float x = static_cast<float>(std::min(std::max(0.0, 1.0 - s), 1.0));  // NaN -> 0 (s = 1)
-  return std::log(1.0f + m.Kf * x) * m.g_scale;
+  return std::sqrt(std::sqrt(x)) * m.g_scale;
 }
-inline double ghs_read(const GhsSigmaRel& m, double s) {
-  return read_cubic1(m.table.v.data(), m.table.axis[0].n, static_cast<double>(ghs_grid(m, s)));
-}
+inline double ghs_read(const GhsSigmaRel& m, double s) { return read_cubic1f(m.table.v.data(), m.table.axis[0].n, ghs_grid(m, s)); }
 }  // namespace detail
 
 // sigma_rel^2(B, c, s) of the material; error lookup_error().
@@ -72,13 +74,11 @@ inline void ghs_sigma_rel2_batch(const GhsSigmaRel& m, std::span<const double> s
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = detail::ghs_read(m, s[i]);
 }
 
-// The render lookup of material (B, c) from the 3-D grid, n_per_cell resampled nodes per cell
-// of the grid's w axis (>= 1; n = (n_w - 1) n_per_cell + 1). stated_error: the grid's stated
-// max_abs_error on R (NaN if unknown; ghs_sigma_rel_load reads it from the file). Throws
-// DomainError if B or c lies outside the grid's range, std::invalid_argument on a
-// bad n_per_cell. Cost: n + ~17000 3-D double lookups (~10 ms).
-inline GhsSigmaRel ghs_sigma_rel_from(const GhsSigmaRelGrid& g, double B, double c, double stated_error,
-                                      int n_per_cell = 8) {
+// The render lookup of material (B, c) from the 3-D grid, resampled at n nodes (4 .. 65536)
+// regular in v = (1 - s)^(1/4). stated_error: the grid's stated max_abs_error on R (NaN if unknown;
+// ghs_sigma_rel_load reads it from the file). Throws DomainError if B or c lies outside the
+// grid's range, std::invalid_argument on a bad n. Cost: n + ~17000 3-D double lookups (~10 ms).
+inline GhsSigmaRel ghs_sigma_rel_from(const GhsSigmaRelGrid& g, double B, double c, double stated_error, int n = 2048) {
   const Table& t = g.table();
   const Axis &aB = t.axis(0), &aw = t.axis(1), &ac = t.axis(2);
   const auto check = [](const char* name, double x, const Axis& a) {
@@ -88,29 +88,28 @@ inline GhsSigmaRel ghs_sigma_rel_from(const GhsSigmaRelGrid& g, double B, double
   };
   check("B", B, aB);
   check("c", c, ac);
-  if (!(n_per_cell >= 1 && n_per_cell <= 64))
-    throw std::invalid_argument("render::ghs_sigma_rel: n_per_cell = " + std::to_string(n_per_cell) + " is outside [1, 64]");
+  if (!(n >= 4 && n <= 65536))
+    throw std::invalid_argument("render::ghs_sigma_rel: n = " + std::to_string(n) + " nodes is outside [4, 65536]");
   if (!(aw.x_lo == 0.0 && aw.x_hi == 1.0))
     throw std::invalid_argument("render::ghs_sigma_rel: the grid's w axis spans [" + format_number(aw.x_lo) + ", " +
                                 format_number(aw.x_hi) + "], not [0, 1]");
   GhsSigmaRel m;
   m.B = B, m.c = c, m.K = g.w_scale() * B;
   m.F1 = schema::ghs_sigma_rel::normal_value(B, c);
-  const int n = (aw.n - 1) * n_per_cell + 1;
   FloatTable& f = m.table;
   f.name = "ghs_sigma_rel2(B = " + format_number(B) + ", c = " + format_number(c) + ") resampled from " + t.name();
   f.rank = 1;
   f.cubic = true;
-  f.axis[0] = {Transform::identity, 1.0f, 0.0f, static_cast<float>(n - 1), 0.0, 1.0, n};
+  f.axis[0] = {Transform::fourth_root, 1.0f, 0.0f, static_cast<float>(n - 1), 0.0, 1.0, n};
   f.v.resize(static_cast<std::size_t>(n));
-  // The 3-D double lookup at w itself (no round trip through s).
-  const auto exact_w = [&](double w) {
-    const double x[3] = {B, w, c};
-    return t.eval(x, OutOfDomain::clamp) * m.F1;
-  };
-  for (int j = 0; j < n; ++j) f.v[static_cast<std::size_t>(j)] = static_cast<float>(exact_w(j == n - 1 ? 1.0 : double(j) / (n - 1)));
-  m.Kf = static_cast<float>(m.K);
-  m.g_scale = static_cast<float>((n - 1) / std::log1p(m.K));
+  // The 3-D double lookup at x = 1 - s = v^4 (w = log1p(K x) / log1p(K), no round trip through s).
+  const double log1p_K = std::log1p(m.K);
+  for (int j = 0; j < n; ++j) {
+    const double v = j == n - 1 ? 1.0 : double(j) / (n - 1), x = v * v * v * v;
+    const double p[3] = {B, std::log1p(m.K * x) / log1p_K, c};
+    f.v[static_cast<std::size_t>(j)] = static_cast<float>(t.eval(p, OutOfDomain::clamp) * m.F1);
+  }
+  m.g_scale = static_cast<float>(n - 1);
   f.max_abs_error = stated_error * m.F1;
   // The measured error (top of this file), against the 3-D lookup at s.
   double worst = 0;
@@ -119,26 +118,27 @@ inline GhsSigmaRel ghs_sigma_rel_from(const GhsSigmaRelGrid& g, double B, double
     worst = std::max(worst, std::abs(detail::ghs_read(m, s) - ref));
   };
   const auto s_of_w = [&](double w) { return schema::ghs_sigma_rel::s_of_w(B, std::min(std::max(w, 0.0), 1.0), g.w_scale()); };
-  for (double e : {0.0, 1e-3, 1e-1}) probe(s_of_w(e / (n - 1))), probe(s_of_w(1 - e / (n - 1)));
+  const auto s_of_v = [](double v) { return 1 - v * v * v * v; };
+  for (double e : {0.0, 1e-3, 1e-1}) probe(s_of_v(e / (n - 1))), probe(s_of_v(1 - e / (n - 1)));
   for (double s : {0.0, 1.0, 0.5, 1 - 1e-12, 1e-12}) probe(s);
-  for (int j = 1; j + 1 < aw.n; ++j)
-    for (double d : {-0.75, -0.25, 0.25, 0.75}) probe(s_of_w((j + d / n_per_cell) / (aw.n - 1)));
+  for (int j = 1; j + 1 < aw.n; ++j)  // around the grid's w nodes, where its stencil changes
+    for (double d : {-1e-3, -1e-4, 1e-4, 1e-3}) probe(s_of_w((j + d) / (aw.n - 1)));
   detail::Lcg uniform{0x853c49e6748fea9bull};
   for (int i = 0; i < 16384; ++i) {
-    double w = uniform();
-    if (uniform() < 0.5) w = w * w * w * w, w = uniform() < 0.5 ? w : 1 - w;
-    probe(s_of_w(w));
+    double u = uniform();
+    if (uniform() < 0.5) u = u * u * u * u, u = uniform() < 0.5 ? u : 1 - u;
+    probe(i % 2 ? s_of_w(u) : s_of_v(u));
   }
   f.float_evaluation_error = 2 * worst;
   return m;
 }
 
 // The same from a TableSet holding ghs_sigma_rel.h5's grid (its w_scale and stated error).
-inline GhsSigmaRel ghs_sigma_rel_load(TableSet& ts, double B, double c, int n_per_cell = 8) {
+inline GhsSigmaRel ghs_sigma_rel_load(TableSet& ts, double B, double c, int n = 2048) {
   const LoadedTable& lt = ts.get(std::string(schema::ghs_sigma_rel::kFile), std::string(schema::ghs_sigma_rel::kGrid.name));
   const GhsSigmaRelGrid g(lt);
   return ghs_sigma_rel_from(g, B, c, lt.info.attribute_number("max_abs_error", std::numeric_limits<double>::quiet_NaN()),
-                            n_per_cell);
+                            n);
 }
 
 }  // namespace brdftab::lookup::render

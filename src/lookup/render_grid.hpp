@@ -118,6 +118,23 @@ inline double read_cubic1(const float* v, int n, double g) {
   return -(t1 * t2 * t3) * (1.0 / 6) * p[0] + (t * t2 * t3) * 0.5 * p[1] - (t * t1 * t3) * 0.5 * p[2] +
          (t * t1 * t2) * (1.0 / 6) * p[3];
 }
+// The same read in float at grid coordinate g (the stencil and Lagrange weights of the 2-D
+// read, one packed product and a horizontal sum): ~1-2 ns cheaper than read_cubic1's double
+// weights; the new per-material lookups use it (their error is measured at load with it).
+inline float read_cubic1f(const float* v, int n, float g) {
+  const Stencil s = stencil(g, n);
+#if defined(__SSE2__)
+  __m128 acc = _mm_mul_ps(lagrange_weights(s.t), _mm_loadu_ps(v + s.i));
+  acc = _mm_add_ps(acc, _mm_movehl_ps(acc, acc));
+  acc = _mm_add_ss(acc, _mm_shuffle_ps(acc, acc, 0x55));
+  return _mm_cvtss_f32(acc);
+#else
+  float w[4];
+  lagrange_weights(s.t, w);
+  const float* p = v + s.i;
+  return (w[0] * p[0] + w[2] * p[2]) + (w[1] * p[1] + w[3] * p[3]);
+#endif
+}
 // The fixed point sets of the load-time error measurements (render.hpp, render_table.hpp):
 // Knuth's MMIX LCG, uniform doubles in [0, 1) from its top 53 bits; the same points at every load.
 struct Lcg {
