@@ -16,8 +16,8 @@
 //    sum is folded into the read (render_grid.hpp read_cubic2_sum: sum_m coef_m (rows of
 //    F_m) before the one dot product with the r weights);
 //  - coef_m = (2 - delta_m0) (s_i s_o)^m cos(m phi) in float, cos(m phi) by the Chebyshev
-//    recurrence T_m = 2 cos(phi) T_(m-1) - T_(m-2), cos phi = (ch - sh)(ch + sh) from the
-//    half-angle sines below;
+//    recurrence T_m = 2 cos(phi) T_(m-1) - T_(m-2), cos phi = cos^2(phi / 2) - sin^2(phi / 2)
+//    from the half-angle squares below;
 //  - kept in double where a cancellation or the range needs it: 1 - mu (s = sqrt((1 - mu)
 //    (1 + mu)) ~ sqrt(2 (1 - mu)) as mu -> 1: a float mu rounds 1 - 1e-9 to 1 and loses s =
 //    4.5e-5, a 3e-5 relative error of f through the m = 1 term), mu_min / mu_max (mu may be
@@ -26,8 +26,8 @@
 //    halves phi / 2, (pi - phi) / 2, and the final division of f_single by mu_i + mu_o
 //    (f_single ~ 1 / (mu_i + mu_o) exceeds float's range at grazing);
 //  - f_single in float without the cancellations of the textbook form and without libm
-//    trigonometry: sh = sin(phi / 2), ch = cos(phi / 2) by a Taylor polynomial, 1 -/+ cos
-//    theta as sums of non-negative terms (sh, ch, s_i - s_o from mu_o^2 - mu_i^2), and
+//    trigonometry: sin^2(phi / 2), cos^2(phi / 2) by one Taylor polynomial, 1 -/+ cos theta
+//    as sums of non-negative terms (those squares, s_i - s_o from mu_o^2 - mu_i^2), and
 //    sin theta - theta cos theta read from two 513-node tables on x = sin(theta / 2) (as
 //    (sin theta - theta cos theta) / x^3, ~8/3 at theta = 0: the difference cancels to
 //    theta^3 / 3 there) and x = cos(theta / 2), filled in double at load. At grazing f_single
@@ -67,6 +67,10 @@
 #include "lookup/table.hpp"
 #include "lookup/table_set.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace brdftab::lookup::render {
 
 struct LsBrdfZoneF {
@@ -104,71 +108,95 @@ struct LsBrdf {
 namespace detail {
 inline constexpr double kLsMuFloor = 0x1p-1022;
 
-// sin x for x in [0, pi/2]: its Taylor polynomial through x^13 in float (the first omitted
-// term is 7e-10 at pi/2; a few float roundings otherwise): ~2x cheaper than sinf here.
-inline float sin_quadrant(float x) {
+// sin^2 x for x in [0, pi/4]: its Taylor polynomial sum_k (-1)^(k+1) 2^(2k-1) x^(2k) / (2k)!
+// through x^12 in float (the first omitted term is 3e-9 at pi/4; relative accuracy kept as
+// x -> 0).
+inline float sin2_octant(float x) {
   const float x2 = x * x;
-  return x * (1.0f + x2 * (-1.0f / 6 + x2 * (1.0f / 120 + x2 * (-1.0f / 5040 + x2 * (1.0f / 362880 +
-                                                                                      x2 * (-1.0f / 39916800 + x2 * (1.0f / 6227020800)))))));
+  return x2 * (1.0f + x2 * (-1.0f / 3 + x2 * (2.0f / 45 + x2 * (-1.0f / 315 + x2 * (2.0f / 14175 + x2 * (-2.0f / 467775))))));
 }
 
-// The directions' part of a point (top of this file): mu clamped, s = sin theta of each,
-// cos phi, and c p(u) (f_single = c p(u) / (mu_i + mu_o)).
-struct LsSingle {
+// The coordinates of a point: mu clamped, s = sin theta of each direction, and the mode
+// tables' r and mu_max^(1/4): the six square roots as two packed ones (SSE), the values those
+// of the scalar square roots (IEEE).
+struct LsPoint {
   double mi, mo;
-  float si, so, cphi, cp;
+  float si, so, r, q;  // q = mu_max^(1/4)
 };
-inline LsSingle ls_single(const LsBrdf& t, double mu_i, double mu_o, double phi) {
+inline LsPoint ls_point(double mu_i, double mu_o) {
+  LsPoint pt;
+  pt.mi = std::min(std::max(kLsMuFloor, mu_i), 1.0), pt.mo = std::min(std::max(kLsMuFloor, mu_o), 1.0);
+  const float di = static_cast<float>(1.0 - pt.mi), dm = static_cast<float>(1.0 - pt.mo);
+  const double mx = std::max(pt.mi, pt.mo), mn = std::min(pt.mi, pt.mo);
+  const float ratio = static_cast<float>(mn / mx), mxf = static_cast<float>(mx);
+#if defined(__SSE2__)
+  const __m128 r1 = _mm_sqrt_ps(_mm_set_ps(mxf, ratio, dm * (2.0f - dm), di * (2.0f - di)));
+  alignas(16) float o[4];
+  _mm_store_ps(o, _mm_shuffle_ps(r1, _mm_sqrt_ps(r1), _MM_SHUFFLE(3, 2, 1, 0)));  // s_i, s_o, ratio^(1/4), mx^(1/4)
+  pt.si = o[0], pt.so = o[1], pt.r = o[2], pt.q = o[3];
+#else
+  pt.si = std::sqrt(di * (2.0f - di)), pt.so = std::sqrt(dm * (2.0f - dm));
+  pt.r = std::sqrt(std::sqrt(ratio)), pt.q = std::sqrt(std::sqrt(mxf));
+#endif
+  return pt;
+}
+
+// cos phi and c p(u) at a point (f_single = c p(u) / (mu_i + mu_o)); top of this file.
+struct LsSingle {
+  float cphi, cp;
+};
+inline LsSingle ls_single(const LsBrdf& t, const LsPoint& pt, double phi) {
   constexpr double kPi = std::numbers::pi, kTwoPi = 2 * std::numbers::pi;
-  const double mi = std::min(std::max(kLsMuFloor, mu_i), 1.0), mo = std::min(std::max(kLsMuFloor, mu_o), 1.0);
-  const float di = static_cast<float>(1.0 - mi), dm = static_cast<float>(1.0 - mo);
-  const float si = std::sqrt(di * (2.0f - di)), so = std::sqrt(dm * (2.0f - dm));
   double a = std::abs(phi);
   if (!(a <= kPi)) a = a <= 3 * kPi ? std::abs(kTwoPi - a) : std::abs(std::remainder(a, kTwoPi));
-  // The half-angle sine and cosine of phi, sh = sin(phi / 2) and ch = cos(phi / 2) = sin((pi -
-  // phi) / 2), the arguments halved in double: 1 - cos phi = 2 sh^2 and 1 + cos phi = 2 ch^2
-  // without cancellation at phi = 0 and at phi = pi (where float(pi / 2) would leave ch = 4e-8).
-  const float sh = sin_quadrant(static_cast<float>(0.5 * a)), ch = sin_quadrant(static_cast<float>(0.5 * (kPi - a)));
-  const float cphi = (ch - sh) * (ch + sh);
+  // sh2 = sin^2(phi / 2) = (1 - cos phi) / 2 and ch2 = cos^2(phi / 2) = (1 + cos phi) / 2, both
+  // without cancellation: the smaller of the two from one polynomial at min(phi, pi - phi) / 2
+  // (pi - phi in double: at phi = pi, float(pi / 2) would leave ch2 = 2e-15), the larger 1 - it.
+  const bool upper = a > 0.5 * kPi;
+  const float q = sin2_octant(static_cast<float>(0.5 * (upper ? kPi - a : a)));
+  const float qc[2] = {q, 1.0f - q};
+  const float sh2 = qc[upper], ch2 = qc[!upper];
+  const float cphi = ch2 - sh2;
   // d'Eon Eq. 17 with Eq. 1: cos theta = u = -omega_i . omega_o = -(mu_i mu_o + s_i s_o cos
   // phi). 1 - u and 1 + u as sums of non-negative terms (no cancellation as theta -> 0, the
   // grazing forward direction, or theta -> pi):
   //   1 - u = ((mu_i + mu_o)^2 + (s_i - s_o)^2) / 2 + s_i s_o (1 + cos phi),
   //   1 + u = ((mu_i - mu_o)^2 + (s_i - s_o)^2) / 2 + s_i s_o (1 - cos phi),
   // s_i - s_o = (mu_o - mu_i)(mu_o + mu_i) / (s_i + s_o).
-  const float p = si * so, fi = static_cast<float>(mi), fo = static_cast<float>(mo);
+  const float si = pt.si, so = pt.so, p = si * so, fi = static_cast<float>(pt.mi), fo = static_cast<float>(pt.mo);
   const float sum = fi + fo, dmu = fo - fi, ds = dmu * sum / std::max(si + so, 1e-30f);
-  const float omu = 0.5f * (sum * sum + ds * ds) + 2.0f * p * (ch * ch);
-  const float opu = 0.5f * (dmu * dmu + ds * ds) + 2.0f * p * (sh * sh);
+  const float omu = 0.5f * (sum * sum + ds * ds) + 2.0f * p * ch2;
+  const float opu = 0.5f * (dmu * dmu + ds * ds) + 2.0f * p * sh2;
   // sin theta - theta cos theta from the phase tables (LsBrdf::phase): x = sin(theta / 2) =
   // sqrt((1 - u) / 2) up to theta = pi/2, else cos(theta / 2) = sqrt((1 + u) / 2), no inverse
   // trigonometric function (the textbook form acos(u) cancels to theta^3 / 3 as theta -> 0;
   // in float it measured 2e-6 .. 4e-5 relative error of f at grazing forward scattering).
-  const bool forward = omu <= opu;
-  const float x = std::sqrt(0.5f * (forward ? omu : opu));
-  const float gx = static_cast<float>(read_cubic1(t.phase.data() + (forward ? 0 : LsBrdf::kPhaseNodes), LsBrdf::kPhaseNodes,
-                                                  static_cast<double>(x * t.phase_scale)));
-  const float g = forward ? x * x * x * gx : gx;
+  // Without branches (forward and back scattering alternate at random in a shading loop).
+  const int back = omu > opu;
+  const float x = std::sqrt(0.5f * std::min(omu, opu));
+  const float gx = read_cubic1f(t.phase.data() + back * LsBrdf::kPhaseNodes, LsBrdf::kPhaseNodes, x * t.phase_scale);
+  const float both[2] = {x * x * x * gx, gx};
+  const float g = both[back];
   constexpr float kPhase = static_cast<float>(2.0 / (3.0 * kPi * kPi));
-  return {mi, mo, si, so, cphi, t.cf * kPhase * g};
+  return {cphi, t.cf * kPhase * g};
 }
 // f_single alone.
 inline double ls_f_single(const LsBrdf& t, double mu_i, double mu_o, double phi) {
-  const LsSingle d = ls_single(t, mu_i, mu_o, phi);
-  return static_cast<double>(d.cp) / (d.mi + d.mo);
+  const LsPoint pt = ls_point(mu_i, mu_o);
+  return static_cast<double>(ls_single(t, pt, phi).cp) / (pt.mi + pt.mo);
 }
 
 // f_single and f_multiple at one point (top of this file).
 inline LsBrdfValue ls_brdf_eval(const LsBrdf& t, double mu_i, double mu_o, double phi) {
-  const LsSingle d = ls_single(t, mu_i, mu_o, phi);
-  const double mi = d.mi, mo = d.mo;
-  const float p = d.si * d.so, cphi = d.cphi;
-  // The zone, its grid coordinates and the mode coefficients.
-  const double mx = std::max(mi, mo), mn = std::min(mi, mo);
-  const float r = std::sqrt(std::sqrt(static_cast<float>(mn / mx)));
+  const LsPoint pt = ls_point(mu_i, mu_o);
+  const LsSingle d = ls_single(t, pt, phi);
+  const float p = pt.si * pt.so, cphi = d.cphi;
+  // The zone and its grid coordinates: mu_max^(1/4) (main) or log mu_max (corner), and r.
+  const double mx = std::max(pt.mi, pt.mo);
   const bool main = mx >= t.split;
   const LsBrdfZoneF& z = t.zone[main ? 0 : 1];
-  const float tb = main ? std::sqrt(std::sqrt(static_cast<float>(mx))) : std::log(static_cast<float>(std::max(mx, t.mu_lo)));
+  const float tb = main ? pt.q : std::log(static_cast<float>(std::max(mx, t.mu_lo)));
+  // coef_m = (2 - delta_m0) (s_i s_o)^m cos(m phi).
   float coef[LsBrdf::kModes];
   coef[0] = 1.0f;
   float tm1 = 1.0f, tm = cphi, pm = p;  // T_m(cos phi) = cos(m phi), (s_i s_o)^m
@@ -179,9 +207,9 @@ inline LsBrdfValue ls_brdf_eval(const LsBrdf& t, double mu_i, double mu_o, doubl
     coef[m] = 2.0f * pm * tm;
   }
   const float fm = read_cubic2_sum<LsBrdf::kModes>(z.v.data(), z.plane(), static_cast<std::size_t>(z.nr),
-                                                   stencil((tb - z.u0) * z.inv_du, z.nb), stencil(r * z.r_scale, z.nr), coef);
+                                                   stencil((tb - z.u0) * z.inv_du, z.nb), stencil(pt.r * z.r_scale, z.nr), coef);
   LsBrdfValue v;
-  v.f_single = static_cast<double>(d.cp) / (mi + mo);
+  v.f_single = static_cast<double>(d.cp) / (pt.mi + pt.mo);
   v.f_multiple = fm;
   v.f = v.f_single + v.f_multiple;
   return v;
