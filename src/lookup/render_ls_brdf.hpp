@@ -23,8 +23,8 @@
 //    4.5e-5, a 3e-5 relative error of f through the m = 1 term), mu_min / mu_max (mu may be
 //    below float's range: the precise lookup accepts mu down to 2^-1074), the reduction of
 //    phi to [0, pi] (phi in [pi, 3 pi] by 2 pi - |phi|, further out std::remainder) and its
-//    halves phi / 2, (pi - phi) / 2, and the final division of f_single by mu_i + mu_o
-//    (f_single ~ 1 / (mu_i + mu_o) exceeds float's range at grazing);
+//    halves phi / 2, (pi - phi) / 2, and 1 / (mu_i + mu_o), the factor of f_single (f_single
+//    ~ 1 / (mu_i + mu_o) exceeds float's range at grazing);
 //  - f_single in float without the cancellations of the textbook form and without libm
 //    trigonometry: sin^2(phi / 2), cos^2(phi / 2) by one Taylor polynomial, 1 -/+ cos theta
 //    as sums of non-negative terms (those squares, s_i - s_o from mu_o^2 - mu_i^2), and
@@ -175,20 +175,26 @@ inline LsSingle ls_single(const LsBrdf& t, const LsPoint& pt, double phi) {
   const int back = omu > opu;
   const float x = std::sqrt(0.5f * std::min(omu, opu));
   const float gx = read_cubic1f(t.phase.data() + back * LsBrdf::kPhaseNodes, LsBrdf::kPhaseNodes, x * t.phase_scale);
-  const float both[2] = {x * x * x * gx, gx};
-  const float g = both[back];
+#if defined(__SSE2__)
+  const __m128 mask = _mm_cmpgt_ss(_mm_set_ss(omu), _mm_set_ss(opu));
+  const float g = _mm_cvtss_f32(_mm_or_ps(_mm_and_ps(mask, _mm_set_ss(gx)), _mm_andnot_ps(mask, _mm_set_ss(x * x * x * gx))));
+#else
+  const float g = back ? gx : x * x * x * gx;
+#endif
   constexpr float kPhase = static_cast<float>(2.0 / (3.0 * kPi * kPi));
   return {cphi, t.cf * kPhase * g};
 }
 // f_single alone.
 inline double ls_f_single(const LsBrdf& t, double mu_i, double mu_o, double phi) {
   const LsPoint pt = ls_point(mu_i, mu_o);
-  return static_cast<double>(ls_single(t, pt, phi).cp) / (pt.mi + pt.mo);
+  const double inv_sum = 1 / (pt.mi + pt.mo);
+  return static_cast<double>(ls_single(t, pt, phi).cp) * inv_sum;
 }
 
 // f_single and f_multiple at one point (top of this file).
 inline LsBrdfValue ls_brdf_eval(const LsBrdf& t, double mu_i, double mu_o, double phi) {
   const LsPoint pt = ls_point(mu_i, mu_o);
+  const double inv_sum = 1 / (pt.mi + pt.mo);  // formed off the f_single chain (a multiply at its end)
   const LsSingle d = ls_single(t, pt, phi);
   const float p = pt.si * pt.so, cphi = d.cphi;
   // The zone and its grid coordinates: mu_max^(1/4) (main) or log mu_max (corner), and r.
@@ -209,7 +215,7 @@ inline LsBrdfValue ls_brdf_eval(const LsBrdf& t, double mu_i, double mu_o, doubl
   const float fm = read_cubic2_sum<LsBrdf::kModes>(z.v.data(), z.plane(), static_cast<std::size_t>(z.nr),
                                                    stencil((tb - z.u0) * z.inv_du, z.nb), stencil(pt.r * z.r_scale, z.nr), coef);
   LsBrdfValue v;
-  v.f_single = static_cast<double>(d.cp) / (pt.mi + pt.mo);
+  v.f_single = static_cast<double>(d.cp) * inv_sum;
   v.f_multiple = fm;
   v.f = v.f_single + v.f_multiple;
   return v;
