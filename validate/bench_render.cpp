@@ -356,10 +356,9 @@ void register_render_benchmarks(const BenchContext& ctx) {
                 0.0, bytes, rel);
     scalar_bench("render/ls_brdf_material_precise/scalar", lp,
                  [precise](const Points& p, std::size_t i) { return precise->eval(p.mu[i], p.mu2[i], p.alpha[i]).f; }, 0.0,
-                 bytes * 2);
+                 static_cast<double>((r->zone[0].v.size() + r->zone[1].v.size()) * sizeof(double)));  // its values in double
     // Floors: the 8-mode read alone (grid coordinates by one multiply, fixed coefficients), and
-    // f_single alone (lookup/ls_phase_formula.hpp's double form against the render float form
-    // is in the scalar row; here the whole call minus the read: zone, coordinates, coefficients).
+    // f_single alone (coordinates, the half-angle polynomial, 1 -/+ cos theta, the phase read).
     scalar_bench("render/floor/ls_brdf_8_mode_read_only", lp,
                  [r](const Points& p, std::size_t i) {
                    namespace d = lookup::render::detail;
