@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -22,8 +23,12 @@
 #include <unistd.h>
 
 #include "generators/microfacet_albedo.hpp"
+#include "lookup/ghs_sigma_rel.hpp"
+#include "lookup/ls_brdf.hpp"
 #include "lookup/microfacet_albedo.hpp"
 #include "lookup/render.hpp"
+#include "lookup/render_ghs_sigma_rel.hpp"
+#include "lookup/render_ls_brdf.hpp"
 #include "lookup/render_table.hpp"
 #include "lookup/table_set.hpp"
 #include "validate/bench.hpp"
@@ -280,6 +285,95 @@ void register_render_benchmarks(const BenchContext& ctx) {
         per_call(st, n);
       })->Repetitions(5)->ReportAggregatesOnly(true);
     }
+  }
+
+  // sigma_rel^2 of one material (lookup/render_ghs_sigma_rel.hpp; car_paint of
+  // tables/scenes/metals_and_milk.json, B = 40, c = 3.5) at s = the points' mu (uniform in
+  // [0, 1]), against the 3-D double lookup it was resampled from. Counters: the largest
+  // difference at those points, the stated lookup_error, bytes.
+  try {
+    const double B = 40, c = 3.5;
+    auto m = std::make_shared<const lookup::render::GhsSigmaRel>(lookup::render::ghs_sigma_rel_load(*precise_set, B, c));
+    auto grid = std::make_shared<const lookup::GhsSigmaRelGrid>(
+        precise_set->get(std::string(schema::ghs_sigma_rel::kFile), std::string(schema::ghs_sigma_rel::kGrid.name)));
+    const double err = max_err(std::vector<double>(kN, 0.0), [&](std::size_t i) {
+      return lookup::render::ghs_sigma_rel2(*m, pts->mu[i]) - lookup::ghs_sigma_rel2(*grid, B, c, pts->mu[i]);
+    });
+    const double bytes = static_cast<double>(m->bytes());
+    const auto counters = [err, stated = m->lookup_error()](benchmark::State& st) {
+      st.counters["max_abs_diff_vs_3d_lookup"] = err;
+      st.counters["lookup_error"] = stated;
+    };
+    benchmark::RegisterBenchmark("render/ghs_sigma_rel2_material/scalar", [pts, m, bytes, counters](benchmark::State& st) {
+      const std::size_t n = pts->mu.size();
+      for (auto _ : st)
+        for (std::size_t i = 0; i < n; ++i) benchmark::DoNotOptimize(lookup::render::ghs_sigma_rel2(*m, pts->mu[i]));
+      per_call(st, n);
+      st.counters["table_bytes"] = bytes;
+      counters(st);
+    })->Repetitions(5)->ReportAggregatesOnly(true);
+    batch_bench("render/ghs_sigma_rel2_material/batch", pts,
+                [m](const Points& p, std::vector<double>& out) { lookup::render::ghs_sigma_rel2_batch(*m, p.mu, out); }, err, bytes);
+    scalar_bench("render/ghs_sigma_rel2_material_precise_3d/scalar", pts,
+                 [grid, B, c](const Points& p, std::size_t i) { return lookup::ghs_sigma_rel2(*grid, B, c, p.mu[i]); }, 0.0,
+                 static_cast<double>(grid->table().bytes()));
+    scalar_bench("render/floor/ghs_sigma_rel2_coordinate_only", pts,
+                 [m](const Points& p, std::size_t i) { return lookup::render::detail::ghs_grid(*m, p.mu[i]); }, 0.0, 0.0);
+  } catch (const std::exception&) {
+    // no ghs_sigma_rel.h5 in --tables
+  }
+  // The LS BRDF of one material (lookup/render_ls_brdf.hpp; material grey of tables/ls.h5) at
+  // mu_i, mu_o uniform in [0, 1] and phi uniform in [0, pi] (the points' mu, mu2, alpha * pi),
+  // against the precise double lookup (lookup::LsBrdfMaterial, ~110 ns). Counters: the largest
+  // relative difference at those points, the stated lookup_rel_error, bytes.
+  try {
+    auto r = std::make_shared<const lookup::render::LsBrdf>(lookup::render::ls_brdf_load(*precise_set, "grey"));
+    auto precise = std::make_shared<const lookup::LsBrdfMaterial>(precise_set->table("ls.h5", "ls_brdf_modes_material_grey"),
+                                                                   precise_set->table("ls.h5", "ls_brdf_corner_material_grey"), r->c);
+    auto lp = std::make_shared<Points>();
+    lp->mu = pts->mu, lp->mu2 = pts->mu2;
+    for (double a : pts->alpha) lp->alpha.push_back(std::numbers::pi * (std::sqrt(a) - 0.1) / 0.9);  // sqrt(alpha) was uniform
+    double rel = 0;
+    for (std::size_t i = 0; i < kN; ++i) {
+      const double ref = precise->eval(lp->mu[i], lp->mu2[i], lp->alpha[i]).f;
+      rel = std::max(rel, std::abs(lookup::render::ls_brdf_f(*r, lp->mu[i], lp->mu2[i], lp->alpha[i]) - ref) / ref);
+    }
+    const double bytes = static_cast<double>(r->bytes());
+    const auto counters = [rel, stated = r->lookup_rel_error()](benchmark::State& st) {
+      st.counters["max_rel_diff_vs_precise"] = rel;
+      st.counters["lookup_rel_error"] = stated;
+    };
+    benchmark::RegisterBenchmark("render/ls_brdf_material/scalar", [lp, r, bytes, counters](benchmark::State& st) {
+      const std::size_t n = lp->mu.size();
+      for (auto _ : st)
+        for (std::size_t i = 0; i < n; ++i) benchmark::DoNotOptimize(lookup::render::ls_brdf_f(*r, lp->mu[i], lp->mu2[i], lp->alpha[i]));
+      per_call(st, n);
+      st.counters["table_bytes"] = bytes;
+      counters(st);
+    })->Repetitions(5)->ReportAggregatesOnly(true);
+    batch_bench("render/ls_brdf_material/batch", lp,
+                [r](const Points& p, std::vector<double>& out) { lookup::render::ls_brdf_f_batch(*r, p.mu, p.mu2, p.alpha, out); },
+                0.0, bytes, rel);
+    scalar_bench("render/ls_brdf_material_precise/scalar", lp,
+                 [precise](const Points& p, std::size_t i) { return precise->eval(p.mu[i], p.mu2[i], p.alpha[i]).f; }, 0.0,
+                 static_cast<double>((r->zone[0].v.size() + r->zone[1].v.size()) * sizeof(double)));  // its values in double
+    // Floors: the 8-mode read alone (grid coordinates by one multiply, fixed coefficients), and
+    // f_single alone (coordinates, the half-angle polynomial, 1 -/+ cos theta, the phase read).
+    scalar_bench("render/floor/ls_brdf_8_mode_read_only", lp,
+                 [r](const Points& p, std::size_t i) {
+                   namespace d = lookup::render::detail;
+                   const lookup::render::LsBrdfZoneF& z = r->zone[0];
+                   static constexpr float coef[8] = {1, 0.5f, 0.25f, 0.125f, 0.0625f, 0.03125f, 0.015625f, 0.0078125f};
+                   return d::read_cubic2_sum<8>(z.v.data(), z.plane(), static_cast<std::size_t>(z.nr),
+                                                d::stencil(static_cast<float>(p.mu[i] * (z.nb - 1)), z.nb),
+                                                d::stencil(static_cast<float>(p.mu2[i] * (z.nr - 1)), z.nr), coef);
+                 },
+                 0.0, bytes);
+    scalar_bench("render/floor/ls_brdf_f_single_only", lp,
+                 [r](const Points& p, std::size_t i) { return lookup::render::detail::ls_f_single(*r, p.mu[i], p.mu2[i], p.alpha[i]); },
+                 0.0, 0.0);
+  } catch (const std::exception&) {
+    // no ls.h5 material grey in --tables
   }
 
   // Floors: the pieces of a render E read alone (GGX tables).
