@@ -56,6 +56,18 @@ def deprecated(old: str, new: str, stacklevel: int = 3) -> None:
     warnings.warn(f"brdftab: '{old}' is deprecated, use '{new}'", DeprecationWarning, stacklevel=stacklevel)
 
 
+def path_arg(value, name):
+    """os.fspath(value) as str (bytes decoded with the file-system encoding), refusing an
+    embedded NUL, which the C++ side would read as the end of the path (another file, silently),
+    with ValueError naming the parameter, as open() does."""
+    import os
+
+    path = os.fsdecode(os.fspath(value))
+    if "\0" in path:
+        raise ValueError(f"{name}: embedded null byte in the path {path!r}")
+    return path
+
+
 def tables_folder(tables):
     """The table folder to read: `tables` if given, else $BRDFTAB_TABLES, else the tables
     installed with the package (pip), else None (the library's default: ./tables, then the
@@ -63,7 +75,7 @@ def tables_folder(tables):
     import os
 
     if tables is not None:
-        return os.fspath(tables)
+        return path_arg(tables, "tables")
     env = os.environ.get("BRDFTAB_TABLES")
     if env:
         return env

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import os
 
+from . import _conventions as conv
 from . import _core
 
 ENGINE = "h5netcdf"
@@ -19,7 +20,7 @@ ENGINE = "h5netcdf"
 
 def list_tables(path: str | os.PathLike) -> list[str]:
     """The table names in a table file (each a group holding the values and their axes)."""
-    return list(_core.list_tables(os.fspath(path)))
+    return list(_core.list_tables(conv.path_arg(path, "path")))
 
 
 def open_dataset(path: str | os.PathLike, name: str | None = None):
@@ -33,7 +34,7 @@ def open_dataset(path: str | os.PathLike, name: str | None = None):
     """
     import xarray as xr
 
-    path = os.fspath(path)
+    path = conv.path_arg(path, "path")
     names = list_tables(path)  # checks the digest
     if name is None:
         if len(names) != 1:

@@ -18,8 +18,8 @@ class Table:
     """
 
     def __init__(self, path: str | os.PathLike, dataset: str):
-        self._t = _core.LoadedTable(os.fspath(path), dataset)
-        self.path = os.fspath(path)
+        self.path = conv.path_arg(path, "path")
+        self._t = _core.LoadedTable(self.path, dataset)
 
     def __call__(self, *coords, errors: str = "nan"):
         errors = conv.check_errors(errors)

@@ -149,3 +149,18 @@ def test_deprecated_names_warn_once_per_call():
     assert c_old == brdftab.ls_c(k_d=0.5) == brdftab.ls_c(0.5)
     # ls_c inverts ls_kd (two methods that share no code: the k_d(c) solve and its inversion).
     assert abs(brdftab.ls_kd(brdftab.ls_c(0.5)) - 0.5) < 1e-9
+
+
+def test_a_path_with_an_embedded_nul_is_refused_naming_the_parameter():
+    # The C++ side would stop reading the path at the NUL: another file, silently.
+    hfunc = os.path.join(TABLES, "hfunc.h5")
+    for call, name in [
+        (lambda: brdftab.list_tables(hfunc + "\0.bak"), "path"),
+        (lambda: brdftab.open_dataset(hfunc + "\0x", "hfunc_iso"), "path"),
+        (lambda: brdftab.Table(hfunc + "\0x", "hfunc_iso"), "path"),
+        (lambda: brdftab.lookup.microfacet_albedo(0.5, 0.3, tables=TABLES + "\0/elsewhere"), "tables"),
+    ]:
+        with pytest.raises(ValueError, match=name + ": embedded null byte"):
+            call()
+    # bytes paths are file-system paths too
+    assert "hfunc_iso" in brdftab.list_tables(os.fsencode(hfunc))
