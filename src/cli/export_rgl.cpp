@@ -9,6 +9,7 @@
 #include <string>
 
 #include "lookup/number_format.hpp"
+#include "lookup/render_grid.hpp"
 
 namespace brdftab::cli {
 
@@ -187,11 +188,7 @@ double checked(double v, const char* what, const numerics::AuditVec& wi, const n
 // when both directions rotate about the normal: checked at fixed pseudo-random pairs (cosines in
 // [0.05, 1]) and rotations; a relative change above 1e-6 is refused, naming it.
 void require_isotropic(const RglBrdf& f) {
-  std::uint64_t state = 0x9e3779b97f4a7c15u;
-  auto u01 = [&state] {
-    state = state * 6364136223846793005u + 1442695040888963407u;
-    return static_cast<double>(state >> 11) * 0x1.0p-53;
-  };
+  lookup::render::detail::Lcg u01{0x9e3779b97f4a7c15u};  // the project's fixed-point-set LCG
   auto dir = [](double mu, double phi) {
     const double s = std::sqrt((1 - mu) * (1 + mu));
     return numerics::AuditVec{s * std::cos(phi), s * std::sin(phi), mu};
