@@ -112,7 +112,8 @@ int run_generate_mpi(const cli::GenerateOptions& o, std::ostream& out, std::ostr
   ctx.out_dir = o.out_dir;
   ctx.progress = progress.get();
   std::vector<gen::TableSummary> summaries;
-  std::size_t file_index = 0, rows_resumed = 0, rows_computed = 0, rows_dealt = 0, messages = 0;
+  std::size_t file_index = 0, rows_resumed = 0, rows_computed = 0, rows_dealt = 0, messages = 0, rows_shared = 0,
+              rows_affine = 0;
   const auto t0 = std::chrono::steady_clock::now();
   // (Rank 0 takes the output folder's lock, acquire_output_lock, here: one writer per folder.)
   for (std::size_t k = 0; k < src->jobs.size(); ++k) {
@@ -157,6 +158,7 @@ int run_generate_mpi(const cli::GenerateOptions& o, std::ostream& out, std::ostr
     ctx.rows = nullptr;
     rows_resumed += runner.rows_resumed, rows_computed += runner.rows_computed;
     rows_dealt += runner.rows_dealt, messages += runner.messages;
+    rows_shared += runner.rows_shared, rows_affine += runner.rows_affine;
   }
   if (rank != 0) {
     wait_for_done();
@@ -178,11 +180,12 @@ int run_generate_mpi(const cli::GenerateOptions& o, std::ostream& out, std::ostr
   if (code != 0) return code;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!summaries.empty()) cli::print_generate_summary(summaries, out);
-  char line[320];
+  char line[448];
   std::snprintf(line, sizeof line,
                 "%zu tables in %.2f s on %d ranks x %d threads (errors measured off-grid against exact numerics); "
-                "%zu rows computed, %zu from checkpoints, %zu dealt to other ranks",
-                summaries.size(), seconds, size, threads, rows_computed, rows_resumed, rows_dealt);
+                "%zu rows computed, %zu from checkpoints, %zu dealt to other ranks, %zu of %zu rows on the rank that "
+                "had computed their coordinates",
+                summaries.size(), seconds, size, threads, rows_computed, rows_resumed, rows_dealt, rows_affine, rows_shared);
   out << line;
   if (!skipped.empty()) {
     out << "; up to date, skipped:";

@@ -169,6 +169,13 @@ void broadcast(MPI_Comm comm, std::span<double> out) {
     MPI_Bcast(out.data() + k, static_cast<int>(std::min(kChunk, out.size() - k)), MPI_DOUBLE, 0, comm);
 }
 
+// A row's outer coordinates, bit for bit (rows of two tables with the same key share the
+// exact values a family caches in the process that computed them).
+std::string coordinates_key(const gen::RowJobs& jobs, std::size_t i) {
+  const std::span<const double> x = jobs.outer_of(i);
+  return std::string(reinterpret_cast<const char*>(x.data()), x.size_bytes());
+}
+
 }  // namespace
 
 void install_death_messages(int rank) {
@@ -210,21 +217,74 @@ void MpiRowRunner::deal(const gen::RowJobs& jobs, const gen::RowFunction& row, s
   rows_computed += todo.size();
   std::size_t received = 0;
   const std::string stage_text = jobs.dataset + ": " + jobs.stage;
-  const auto record = [&](std::size_t i) {
+  // Affinity: rows whose coordinates rank r computed in an earlier stage wait in claimed[r];
+  // the others (and rank 0's) go to rank 0's pool.
+  std::vector<int> before(jobs.count, -1), computed_by(jobs.count, -1);
+  std::vector<std::deque<std::size_t>> claimed(static_cast<std::size_t>(size_));
+  std::vector<std::size_t> unclaimed;
+  for (std::size_t i : todo) {
+    if (auto it = owner_.find(coordinates_key(jobs, i)); it != owner_.end()) before[i] = it->second;
+    if (before[i] > 0)
+      claimed[static_cast<std::size_t>(before[i])].push_back(i);
+    else
+      unclaimed.push_back(i);
+  }
+  const auto record = [&](std::size_t i, int rank) {
     if (checkpoint_)
       checkpoint_->append(jobs, i, std::span<const double>(out.data() + jobs.offset[i], jobs.offset[i + 1] - jobs.offset[i]));
+    computed_by[i] = rank;
     ++received;
+  };
+  // Up to n rows from the back of the longest claimed queue other than `except`'s, of a rank
+  // not served for `patience`.
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  const auto patience = std::chrono::duration<double>(std::clamp(row_seconds_, 0.1, 10.0));
+  // A rank's claimed rows wait for its first request of the stage (a rank late from the last
+  // stage's broadcast is not slow), then for `patience` after each grant.
+  std::vector<std::optional<Clock::time_point>> served(static_cast<std::size_t>(size_));
+  const auto steal = [&](int except, std::size_t n) {
+    std::deque<std::size_t>* from = nullptr;
+    const Clock::time_point now = Clock::now();
+    for (int r = 1; r < size_; ++r)
+      if (r != except && !claimed[static_cast<std::size_t>(r)].empty() &&
+          served[static_cast<std::size_t>(r)] && now - *served[static_cast<std::size_t>(r)] > patience &&
+          (!from || claimed[static_cast<std::size_t>(r)].size() > from->size()))
+        from = &claimed[static_cast<std::size_t>(r)];
+    std::vector<std::size_t> rows;
+    while (from && !from->empty() && rows.size() < n) rows.push_back(from->back()), from->pop_back();
+    return rows;
+  };
+  const auto any_claimed = [&] {
+    return std::any_of(claimed.begin(), claimed.end(), [](const auto& q) { return !q.empty(); });
+  };
+  struct Request {
+    int rank;
+    std::size_t want;
+  };
+  std::vector<Request> deferred;  // requests answered once claimed rows may be stolen
+  const auto grant = [&](int rank, const std::vector<std::size_t>& rows) {
+    served[static_cast<std::size_t>(rank)] = Clock::now();
+    rows_dealt += rows.size();
+    std::vector<std::int64_t> msg{stage_};
+    msg.insert(msg.end(), rows.begin(), rows.end());
+    MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_INT64_T, rank, kGrant, comm_);
   };
   {
     Pool pool(threads_, jobs, row, out);
     // Rank 0's threads take rows from the front, the other ranks are dealt from the back.
-    pool.add(todo);
+    pool.add(unclaimed);
     auto idle = std::chrono::microseconds(100);
     auto last_report = std::chrono::steady_clock::now();
     while (received < todo.size()) {
       bool active = false;
-      for (std::size_t i : pool.finished(idle)) record(i), active = true;
+      for (std::size_t i : pool.finished(idle)) record(i, 0), active = true;
       if (auto f = pool.failure()) fail(0, jobs, f->first, f->second);
+      // Rank 0 idle with nothing unclaimed: it takes a row claimed by another rank.
+      if (pool.queued() == 0 && pool.load() < static_cast<std::size_t>(threads_)) {
+        const std::vector<std::size_t> rows = steal(0, 1);
+        if (!rows.empty()) pool.add(rows), active = true;
+      }
       MPI_Status st;
       while (probe(comm_, MPI_ANY_SOURCE, st)) {
         active = true;
@@ -241,13 +301,25 @@ void MpiRowRunner::deal(const gen::RowJobs& jobs, const gen::RowFunction& row, s
         }
         if (st.MPI_TAG == kRequest) {
           // Guided dealing: blocks shrink as the stage empties (row costs vary 1000x).
+          // Its claimed rows first (half of them at once: they are cheap where their values are
+          // cached, and a message per row would leave the rank waiting), then unclaimed ones,
+          // then rows claimed by the busiest rank.
           const std::size_t want = static_cast<std::size_t>(std::max<std::int64_t>(1, h.index));
-          const std::size_t share = std::max<std::size_t>(1, pool.queued() / (2 * static_cast<std::size_t>(size_)));
-          const std::vector<std::size_t> rows = pool.take(std::min(want, share));
-          rows_dealt += rows.size();
-          std::vector<std::int64_t> msg{stage_};
-          msg.insert(msg.end(), rows.begin(), rows.end());
-          MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_INT64_T, st.MPI_SOURCE, kGrant, comm_);
+          std::deque<std::size_t>& own = claimed[static_cast<std::size_t>(st.MPI_SOURCE)];
+          std::vector<std::size_t> rows;
+          const std::size_t own_block = std::max(want, own.size() / 2);
+          while (!own.empty() && rows.size() < own_block) rows.push_back(own.front()), own.pop_front();
+          if (rows.empty()) {
+            const std::size_t share = std::max<std::size_t>(1, pool.queued() / (2 * static_cast<std::size_t>(size_)));
+            rows = pool.take(std::min(want, share));
+          }
+          if (rows.empty()) rows = steal(st.MPI_SOURCE, want);
+          // Nothing to give yet, but claimed rows that may come free: an empty grant would end
+          // the rank's stage, so it hears back (one row, stolen once patience runs out) later.
+          if (rows.empty() && any_claimed())
+            deferred.push_back({st.MPI_SOURCE, want});
+          else
+            grant(st.MPI_SOURCE, rows);
         } else if (st.MPI_TAG == kResult) {
           const std::size_t i = static_cast<std::size_t>(h.index);
           const std::size_t n = (buf.size() - sizeof h) / sizeof(double);
@@ -256,10 +328,20 @@ void MpiRowRunner::deal(const gen::RowJobs& jobs, const gen::RowFunction& row, s
             MPI_Abort(MPI_COMM_WORLD, 1);
           }
           std::memcpy(out.data() + jobs.offset[i], buf.data() + sizeof h, n * sizeof(double));
-          record(i);
+          record(i, st.MPI_SOURCE);
         } else if (st.MPI_TAG == kFail) {
           fail(st.MPI_SOURCE, jobs, static_cast<std::size_t>(h.index), std::string(buf.begin() + sizeof h, buf.end()));
         }
+      }
+      for (std::size_t k = 0; k < deferred.size();) {
+        std::vector<std::size_t> rows = steal(deferred[k].rank, deferred[k].want);
+        if (rows.empty() && any_claimed()) {
+          ++k;
+          continue;
+        }
+        grant(deferred[k].rank, rows);  // rows stolen, or none left to claim: the rank's stage ends
+        deferred.erase(deferred.begin() + static_cast<std::ptrdiff_t>(k));
+        active = true;
       }
       idle = active ? std::chrono::microseconds(100) : std::min(idle * 2, std::chrono::microseconds(2000));
       if (std::chrono::steady_clock::now() - last_report > std::chrono::milliseconds(200)) {
@@ -269,6 +351,15 @@ void MpiRowRunner::deal(const gen::RowJobs& jobs, const gen::RowFunction& row, s
     }
   }
   if (checkpoint_) checkpoint_->sync();
+  if (!todo.empty()) {
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    row_seconds_ = std::max(row_seconds_, seconds * size_ * threads_ / static_cast<double>(todo.size()));
+  }
+  for (std::size_t i : todo) {
+    rows_shared += before[i] >= 0;
+    rows_affine += before[i] >= 0 && before[i] == computed_by[i];
+    owner_[coordinates_key(jobs, i)] = computed_by[i];
+  }
   for (int r = 1; r < size_; ++r) MPI_Send(&stage_, 1, MPI_INT64_T, r, kEnd, comm_);
   ctx.report(stage_text, 1.0);
 }

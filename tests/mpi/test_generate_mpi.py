@@ -297,3 +297,56 @@ def test_foreign_checkpoint(work, reference):
     assert r.returncode == 0, r.stderr
     assert "discarded" in r.stderr
     assert files(out) == ref
+
+
+GGX_TABLES = [f"microfacet_albedo_ggx_{q}_compact" for q in ("E_corr", "E_sep", "split_scale", "split_bias")]
+
+
+def test_affinity(work):
+    """The four GGX compact tables share every row's coordinates (and, in the process that
+    computed them, the exact E values): at 3 ranks each later table's row goes back to the rank
+    that computed the first table's row. The ranks log their rows into separate files (a shell
+    wrapper picks the file by the launcher's rank variable). Rank 0 computes from the front of
+    each stage and deals from the back, so without affinity ranks 1 and 2 split the back rows in
+    the order their requests arrive: a row of theirs lands on the same rank about half the time."""
+    manifest = work / "ggx.json"
+    manifest.write_text(json.dumps({"schema_version": 1, "tables": {"microfacet_albedo": {
+        "ggx": True, "beckmann": False, "gbeckmann": False, "precise": False, "render": False,
+        "alpha_range": [0.2, 1], "compact_log_alpha_step": 0.035, "compact_s_step": 0.05, "error_rows": 8,
+        "error_per_row": 8, "avg_log_alpha_step": 0.5, "avg_error_points": 4}}}))
+    single = work / "ggx_single"
+    r = generate(manifest, single, threads=2)
+    assert r.returncode == 0, r.stderr
+    log = work / "ggx_rank"
+    wrapper = 'BRDFTAB_TEST_ROW_LOG="$0.${OMPI_COMM_WORLD_RANK:-${PMI_RANK:-0}}" exec "$@"'
+    cmd = mpirun_args(3) + ["sh", "-c", wrapper, str(log), EXE, "generate", "--manifest", str(manifest),
+                            "--tables", str(work / "ggx_mpi"), "--quiet", "--threads", "1"]
+    r = subprocess.run(cmd, capture_output=True, text=True, env=env(), timeout=120)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert files(work / "ggx_mpi") == files(single)
+    rank_of = {}
+    for rank in (0, 1, 2):
+        for row in logged(f"{log}.{rank}"):
+            assert row not in rank_of, f"{row} computed twice"
+            rank_of[row] = rank
+    first = {i: rk for (d, s, i), rk in rank_of.items() if d == GGX_TABLES[0] and s == "fill"}
+    assert len(first) >= 40
+    shares = [sum(rk == k for rk in first.values()) / len(first) for k in (0, 1, 2)]
+    assert min(shares[1:]) >= 0.1, f"ranks 0, 1, 2 computed {shares} of the first table: not a test of affinity"
+    # A later table's row is a hit where its rank computed the same row of an earlier table (the
+    # exact values are in that rank's cache), counted over the rows dealt to ranks 1 and 2.
+    dealt = [i for i, rk in first.items() if rk > 0]
+    had = {i: {first[i]} for i in dealt}
+    hits = 0
+    for d in GGX_TABLES[1:]:
+        for i in dealt:
+            rk = rank_of[(d, "fill", i)]
+            hits += rk in had[i]
+            had[i].add(rk)
+    hit_rate = hits / (len(dealt) * (len(GGX_TABLES) - 1))
+    print(f"ranks 0, 1, 2 computed {[round(x, 2) for x in shares]} of the first table; {hit_rate:.1%} of the later "
+          f"tables' rows dealt to ranks 1 and 2 found their values computed on their rank")
+    assert hit_rate >= 0.85
+    m = re.search(r"(\d+) of (\d+) rows on the rank that had computed their coordinates", r.stdout)
+    assert m and int(m.group(2)) >= len(first) * (len(GGX_TABLES) - 1), r.stdout
+    assert int(m.group(1)) / int(m.group(2)) >= 0.85, r.stdout
