@@ -5,6 +5,7 @@
 // single-process run writes, byte for byte.
 #include <mpi.h>
 #include <omp.h>
+#include <sched.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -13,6 +14,8 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 #include <thread>
 
 #include "cli/commands.hpp"
@@ -59,6 +62,27 @@ void wait_for_done() {
   std::abort();
 }
 
+// Launchers bind ranks to CPUs (Open MPI binds each rank to one core when -np <= 2, to a
+// socket above): --threads T on a rank bound to fewer than T CPUs runs its threads on a share
+// of them. Rank 0 names the ranks so bound and the launcher options that give each rank T CPUs.
+void warn_if_bound(int rank, int size, int threads, std::ostream& err) {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  const int mine = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : threads;
+  std::vector<int> cpus(static_cast<std::size_t>(size));
+  MPI_Gather(&mine, 1, MPI_INT, cpus.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (rank != 0) return;
+  std::string bound;
+  for (int r = 0; r < size; ++r)
+    if (cpus[static_cast<std::size_t>(r)] < threads)
+      bound += (bound.empty() ? "" : ", ") + std::to_string(r) + " (" + std::to_string(cpus[static_cast<std::size_t>(r)]) +
+               (cpus[static_cast<std::size_t>(r)] == 1 ? " CPU)" : " CPUs)");
+  if (!bound.empty())
+    err << "brdftab generate: warning: " << threads << " threads per rank, but the launcher bound rank " << bound
+        << ": its threads share those CPUs. Give each rank " << threads << " CPUs (Open MPI: mpirun --map-by slot:PE="
+        << threads << ", or --bind-to none; Slurm: --cpus-per-task=" << threads << ")\n";
+}
+
 }  // namespace
 
 int run_generate_mpi(const cli::GenerateOptions& o, std::ostream& out, std::ostream& err) {
@@ -91,6 +115,7 @@ int run_generate_mpi(const cli::GenerateOptions& o, std::ostream& out, std::ostr
   }
   if (o.threads > 0) omp_set_num_threads(o.threads);
   const int threads = omp_get_max_threads();
+  warn_if_bound(rank, size, threads, err);
 
   // Rank 0 decides what is up to date; the others follow.
   std::vector<char> build(src->jobs.size(), 1);

@@ -263,8 +263,11 @@ void MpiRowRunner::deal(const gen::RowJobs& jobs, const gen::RowFunction& row, s
     std::size_t want;
   };
   std::vector<Request> deferred;  // requests answered once claimed rows may be stolen
+  std::vector<std::optional<Clock::time_point>> first_served(static_cast<std::size_t>(size_));
+  std::vector<std::size_t> returned(static_cast<std::size_t>(size_));  // rows each rank returned this stage
   const auto grant = [&](int rank, const std::vector<std::size_t>& rows) {
     served[static_cast<std::size_t>(rank)] = Clock::now();
+    if (!first_served[static_cast<std::size_t>(rank)]) first_served[static_cast<std::size_t>(rank)] = served[static_cast<std::size_t>(rank)];
     rows_dealt += rows.size();
     std::vector<std::int64_t> msg{stage_};
     msg.insert(msg.end(), rows.begin(), rows.end());
@@ -301,13 +304,19 @@ void MpiRowRunner::deal(const gen::RowJobs& jobs, const gen::RowFunction& row, s
         }
         if (st.MPI_TAG == kRequest) {
           // Guided dealing: blocks shrink as the stage empties (row costs vary 1000x).
-          // Its claimed rows first (half of them at once: they are cheap where their values are
-          // cached, and a message per row would leave the rank waiting), then unclaimed ones,
-          // then rows claimed by the busiest rank.
+          // Its claimed rows first, as many as it has returned in 50 ms so far this stage (cached
+          // rows are cheap: a message per row would leave the rank waiting; costly ones go a
+          // few at a time, so they stay free to be stolen), then unclaimed rows, then rows
+          // claimed by the busiest rank.
           const std::size_t want = static_cast<std::size_t>(std::max<std::int64_t>(1, h.index));
-          std::deque<std::size_t>& own = claimed[static_cast<std::size_t>(st.MPI_SOURCE)];
+          const auto src = static_cast<std::size_t>(st.MPI_SOURCE);
+          std::deque<std::size_t>& own = claimed[src];
           std::vector<std::size_t> rows;
-          const std::size_t own_block = std::max(want, own.size() / 2);
+          std::size_t own_block = want;
+          if (served[src] && returned[src] > 0) {
+            const double seconds = std::chrono::duration<double>(Clock::now() - *first_served[src]).count();
+            own_block = std::max(want, static_cast<std::size_t>(0.05 * static_cast<double>(returned[src]) / seconds));
+          }
           while (!own.empty() && rows.size() < own_block) rows.push_back(own.front()), own.pop_front();
           if (rows.empty()) {
             const std::size_t share = std::max<std::size_t>(1, pool.queued() / (2 * static_cast<std::size_t>(size_)));
@@ -329,6 +338,7 @@ void MpiRowRunner::deal(const gen::RowJobs& jobs, const gen::RowFunction& row, s
           }
           std::memcpy(out.data() + jobs.offset[i], buf.data() + sizeof h, n * sizeof(double));
           record(i, st.MPI_SOURCE);
+          ++returned[static_cast<std::size_t>(st.MPI_SOURCE)];
         } else if (st.MPI_TAG == kFail) {
           fail(st.MPI_SOURCE, jobs, static_cast<std::size_t>(h.index), std::string(buf.begin() + sizeof h, buf.end()));
         }

@@ -10,7 +10,8 @@
 // Affinity: the tables of one file often share their rows' coordinates (E_corr, E_sep and the
 // split sum of microfacet_albedo come from the same exact E, cached in the process that computed
 // it). Rank 0 remembers which rank computed each row's outer coordinates and deals a later row
-// with the same coordinates to that rank first; a rank out of its own rows takes unclaimed
+// with the same coordinates to that rank first (in blocks of what it returned in 50 ms: many
+// cached rows per message, costly ones a few at a time); a rank out of its own rows takes unclaimed
 // ones, then steals from the rank with the most left, so the dealing stays dynamic. A rank's
 // claimed rows are stolen only once it has asked for rows in the stage and has not been served
 // since for as long as a row costs (the costliest stage's mean so far, 0.1 s to 10 s): a stolen

@@ -350,3 +350,21 @@ def test_affinity(work):
     m = re.search(r"(\d+) of (\d+) rows on the rank that had computed their coordinates", r.stdout)
     assert m and int(m.group(2)) >= len(first) * (len(GGX_TABLES) - 1), r.stdout
     assert int(m.group(1)) / int(m.group(2)) >= 0.85, r.stdout
+
+
+def test_bound_threads_warning(work, reference):
+    """--threads 2 on a rank the launcher bound to one core: a warning naming the rank and the
+    launcher options (the file is still the same); unbound, no warning."""
+    manifest, ref, _ = reference
+    for binding, warned in (("core", True), ("none", False)):
+        if not warned and len(os.sched_getaffinity(0)) < 2:
+            continue
+        out = work / f"bound_{binding}"
+        cmd = mpirun_args(1) + ["--bind-to", binding, EXE, "generate", "--manifest", str(manifest), "--tables", str(out),
+                                "--quiet", "--threads", "2"]
+        r = subprocess.run(cmd, capture_output=True, text=True, env=env(), timeout=120)
+        assert r.returncode == 0, r.stdout + r.stderr
+        assert ("the launcher bound rank 0 (1 CPU)" in r.stderr) == warned, r.stderr
+        if warned:
+            assert "--map-by slot:PE=2" in r.stderr and "--cpus-per-task=2" in r.stderr
+        assert files(out) == ref
