@@ -38,16 +38,20 @@ void print_generate_summary(const std::vector<gen::TableSummary>& rows, std::ost
   }
 }
 
-int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err) {
+std::optional<JobSource> load_generate_jobs(const GenerateOptions& o, std::ostream& err) {
   if (!o.scene.empty() && !o.manifest.empty()) {
     err << "brdftab generate: --scene and --manifest exclude each other\n";
-    return 2;
+    return std::nullopt;
   }
   if (!o.scene.empty() && !o.out_given) {
     err << "brdftab generate: --scene needs --tables DIR (a scene's tables never go to the default table folder)\n";
-    return 2;
+    return std::nullopt;
   }
-  const auto src = load_jobs("generate", o.manifest, o.scene, o.only, err);
+  return load_jobs("generate", o.manifest, o.scene, o.only, err);
+}
+
+int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err) {
+  const auto src = load_generate_jobs(o, err);
   if (!src) return 2;
   // One writer per folder, from the up-to-date check to the scene index (output_lock.hpp).
   OutputLock lock;

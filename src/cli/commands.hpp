@@ -3,10 +3,12 @@
 // 0 success, 1 failure (I/O, bad file, numerics), 2 bad input (eval rows, manifest).
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "generators/generate_context.hpp"
+#include "cli/job_source.hpp"
 
 namespace brdftab::cli {
 
@@ -27,6 +29,9 @@ struct GenerateOptions {
   bool wait = false;               // wait for another run's lock on out_dir instead of exiting 2
 };
 int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err);
+// The jobs of a generate run (load_jobs, job_source.hpp), refusing --scene without --tables;
+// on bad input a message on err and nullopt (exit 2). Shared with brdftab-mpi.
+std::optional<JobSource> load_generate_jobs(const GenerateOptions& o, std::ostream& err);
 // The table of what generate built (file, dataset, shape, size, errors, seconds).
 void print_generate_summary(const std::vector<gen::TableSummary>& rows, std::ostream& out);
 // Runs `generate` instead of run_generate when set: the MPI executable (brdftab-mpi) sets it.

@@ -91,15 +91,14 @@ int run_generate_mpi(const cli::GenerateOptions& o, std::ostream& out, std::ostr
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   std::ostringstream quiet_err;
   std::ostream& my_err = rank == 0 ? err : quiet_err;  // rank 0 speaks for all
-  if (!o.scene.empty() && !o.out_given) {
-    my_err << "brdftab generate: --scene needs --tables DIR (a scene's tables never go to the default table folder)\n";
-    return 2;
-  }
   // Every rank reads the input; all must succeed and see the same jobs (same files on
   // every node).
-  std::optional<cli::JobSource> src = cli::load_jobs("generate", o.manifest, o.scene, o.only, my_err);
+  std::optional<cli::JobSource> src = cli::load_generate_jobs(o, my_err);
+  int root_ok = src.has_value() ? 1 : 0;
+  MPI_Bcast(&root_ok, 1, MPI_INT, 0, MPI_COMM_WORLD);
   if (!all_ok(src.has_value())) {
-    if (rank != 0 && !src) err << "brdftab generate: rank " << rank << ": " << quiet_err.str();
+    // Rank 0 speaks for all; a rank speaks for itself only where it failed and rank 0 did not.
+    if (rank != 0 && !src && root_ok) err << "brdftab generate: rank " << rank << ": " << quiet_err.str();
     return 2;
   }
   std::string keys;

@@ -368,3 +368,14 @@ def test_bound_threads_warning(work, reference):
         if warned:
             assert "--map-by slot:PE=2" in r.stderr and "--cpus-per-task=2" in r.stderr
         assert files(out) == ref
+
+
+def test_scene_needs_tables(work):
+    """Under mpirun the same input checks as the single process: --scene without --tables is
+    refused (exit 2, one message from rank 0), nothing written."""
+    scene = Path(__file__).resolve().parents[2] / "tables" / "scenes" / "metals_and_milk.json"
+    cmd = mpirun_args(2) + [EXE, "generate", "--scene", str(scene), "--quiet", "--threads", "1"]
+    r = subprocess.run(cmd, capture_output=True, text=True, env=env(), timeout=120, cwd=work)
+    assert r.returncode == 2, r.stdout + r.stderr
+    assert r.stderr.count("--scene needs --tables DIR") == 1, r.stderr
+    assert not (work / "tables").exists()
