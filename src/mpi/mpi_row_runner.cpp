@@ -314,8 +314,9 @@ void MpiRowRunner::deal(const gen::RowJobs& jobs, const gen::RowFunction& row, s
           std::vector<std::size_t> rows;
           std::size_t own_block = want;
           if (served[src] && returned[src] > 0) {
-            const double seconds = std::chrono::duration<double>(Clock::now() - *first_served[src]).count();
-            own_block = std::max(want, static_cast<std::size_t>(0.05 * static_cast<double>(returned[src]) / seconds));
+            const double seconds = std::max(1e-6, std::chrono::duration<double>(Clock::now() - *first_served[src]).count());
+            const double rows_in_50ms = std::min(0.05 * static_cast<double>(returned[src]) / seconds, static_cast<double>(own.size()));
+            own_block = std::max(want, static_cast<std::size_t>(rows_in_50ms));
           }
           while (!own.empty() && rows.size() < own_block) rows.push_back(own.front()), own.pop_front();
           if (rows.empty()) {
