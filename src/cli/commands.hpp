@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "generators/generate_context.hpp"
 #include "cli/job_source.hpp"
+#include "generators/generate_context.hpp"
 
 namespace brdftab::cli {
 
